@@ -1,0 +1,257 @@
+package net.smc.policy;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Objects;
+import java.util.OptionalInt;
+import java.util.Random;
+import java.util.function.Consumer;
+import java.util.function.LongSupplier;
+import java.util.random.RandomGenerator;
+import net.smc.policy.lang.Unit;
+import net.smc.policy.runtime.CellRuntime;
+import net.smc.policy.runtime.Domain;
+import net.smc.policy.runtime.EventTemplate;
+import net.smc.policy.runtime.ExitRequest;
+import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.runtime.PonderError;
+import net.smc.policy.runtime.Values;
+
+/**
+ * Start here: one self-managed cell's policy engine, embeddable on its own. It runs PonderTalk
+ * units, holds managed objects in domains, delivers events to obligation policies and checks
+ * authorisation policies. Output, errors, clock and randomness are given by the caller; the cell
+ * never prints, sleeps or reads the wall clock by itself. Not thread-safe: use it from one thread
+ * (or one executor) at a time.
+ *
+ * <pre>{@code
+ * List<String> lines = new ArrayList<>();
+ * Cell cell = Cell.builder().output(lines::add).errors(d -> System.err.println(d)).build();
+ * cell.run("boot.p2", """
+ *     root/event at: "alarm" put: (root/factory/event create: #("level")).
+ *     p := root/factory/ecapolicy create.
+ *     p event: root/event/alarm; condition: [:level | level > 5]; action: [:level | root print: level].
+ *     p active: true.
+ *     """);
+ * cell.raise("root/event/alarm", 7);   // lines is now [7]
+ * }</pre>
+ */
+public final class Cell {
+    private final CellRuntime runtime;
+    private Integer exitStatus;
+
+    private Cell(CellRuntime runtime) {
+        this.runtime = runtime;
+    }
+
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /** Settings of a new cell; every one has a default. */
+    public static final class Builder {
+        private Consumer<String> output = line -> { };
+        private Consumer<Diagnostic> errors = d -> { };
+        private AuthMode auth = AuthMode.OFF;
+        private LongSupplier clock = () -> 0L;
+        private RandomGenerator random = new Random(0);
+        private Limits limits = Limits.DEFAULT;
+        private PolicyRepository repository;
+        private final Map<String, Class<?>> classes = new LinkedHashMap<>();
+
+        /** Where {@code root print:} lines go (default: nowhere). */
+        public Builder output(Consumer<String> lineSink) {
+            this.output = Objects.requireNonNull(lineSink, "output");
+            return this;
+        }
+
+        /** Where errors go (default: nowhere). */
+        public Builder errors(Consumer<Diagnostic> reporter) {
+            this.errors = Objects.requireNonNull(reporter, "errors");
+            return this;
+        }
+
+        /** Authorisation checking and its default decision (default: off). */
+        public Builder auth(AuthMode mode) {
+            this.auth = Objects.requireNonNull(mode, "auth");
+            return this;
+        }
+
+        /** The clock, in milliseconds since the epoch (default: always 0). */
+        public Builder clock(LongSupplier epochMillis) {
+            this.clock = Objects.requireNonNull(epochMillis, "clock");
+            return this;
+        }
+
+        /** The random source of {@code Number random} (default: seeded with 0). */
+        public Builder random(RandomGenerator source) {
+            this.random = Objects.requireNonNull(source, "random");
+            return this;
+        }
+
+        public Builder limits(Limits bounds) {
+            this.limits = Objects.requireNonNull(bounds, "limits");
+            return this;
+        }
+
+        /** The policy repository that {@code policy:} URIs and includes resolve against. */
+        public Builder repository(PolicyRepository repo) {
+            this.repository = repo;
+            return this;
+        }
+
+        /** Makes a managed-object class loadable as {@code root load: "name"}. */
+        public Builder register(String name, Class<?> type) {
+            classes.put(Objects.requireNonNull(name, "name"), Objects.requireNonNull(type, "type"));
+            return this;
+        }
+
+        public Cell build() {
+            return new Cell(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
+                    repository, Map.copyOf(classes))));
+        }
+    }
+
+    /** Runs a unit of PonderTalk text with fresh variables. Errors go to the error reporter. */
+    public RunResult run(String sourceName, String text) {
+        return run(sourceName, text, null, null);
+    }
+
+    /** Runs a file as one unit; its name in diagnostics is the path as given. */
+    public RunResult runFile(Path file) {
+        String text;
+        try {
+            text = Files.readString(file);
+        } catch (IOException | java.io.UncheckedIOException e) {
+            runtime.report(new Diagnostic(null, file + ": cannot read: " + e.getMessage()));
+            return new RunResult(RunResult.Status.RUNTIME_ERROR, null);
+        }
+        return run(file.toString(), text, file, null);
+    }
+
+    /**
+     * Runs text that came from {@code file} (which anchors its {@code include}s and {@code read:}s)
+     * under the name {@code sourceName}, with fresh variables.
+     */
+    public RunResult run(String sourceName, String text, Path file) {
+        return run(sourceName, text, file, null);
+    }
+
+    /** Runs the repository file a {@code policy:} URI names, with fresh variables. */
+    public RunResult load(String uri) {
+        return run("load", "root read: \"" + uri.replace("\"", "\\\"") + "\"");
+    }
+
+    private RunResult run(String sourceName, String text, Path file, CellRuntime.Variables variables) {
+        if (exitStatus != null) {
+            return new RunResult(RunResult.Status.EXITED, null);
+        }
+        Unit unit = runtime.parse(sourceName, text, file);
+        if (unit.hasErrors()) {
+            return new RunResult(RunResult.Status.SYNTAX_ERROR, null);
+        }
+        try {
+            Object value = runtime.run(unit, variables);
+            return value == null ? new RunResult(RunResult.Status.RUNTIME_ERROR, null) : new RunResult(RunResult.Status.OK, value);
+        } catch (ExitRequest exit) {
+            exitStatus = exit.status();
+            return new RunResult(RunResult.Status.EXITED, null);
+        }
+    }
+
+    /** A shell session: units whose variables persist from one to the next. */
+    public final class Session {
+        private final CellRuntime.Variables variables = new CellRuntime.Variables();
+
+        public RunResult run(String sourceName, String text) {
+            return Cell.this.run(sourceName, text, null, variables);
+        }
+
+        /** A variable's value, or {@code null} if it is not set. */
+        public Object variable(String name) {
+            return variables.get(name);
+        }
+    }
+
+    public Session session() {
+        return new Session();
+    }
+
+    /** Ends the boot phase: authorisation now applies the configured default decision. */
+    public void endBoot() {
+        runtime.endBoot();
+    }
+
+    /** Registers a managed-object class after the cell was built. */
+    public void register(String name, Class<?> type) {
+        runtime.register(name, type);
+    }
+
+    /** The root domain. */
+    public Domain root() {
+        return runtime.root();
+    }
+
+    /**
+     * The object at a path such as {@code root/event/alarm} or {@code /event/alarm}.
+     *
+     * @throws PonderError {@code path not found '...'}
+     */
+    public Object resolve(String path) {
+        return runtime.resolve(path);
+    }
+
+    /**
+     * Raises an event of the template at {@code templatePath} from Java, with root as its source;
+     * Java values convert as for managed-object results (ints to numbers, lists to arrays ...).
+     * Errors in policies are reported, not thrown.
+     *
+     * @return {@code false} when the event could not be raised (the error was reported)
+     */
+    public boolean raise(String templatePath, Object... values) {
+        if (exitStatus != null) {
+            return false;
+        }
+        try {
+            Object template = runtime.resolve(templatePath);
+            if (!(template instanceof EventTemplate t)) {
+                throw new PonderError("'" + templatePath + "' is a " + Values.className(template) + ", not an EventTemplate");
+            }
+            Object[] converted = new Object[values.length];
+            for (int i = 0; i < values.length; i++) {
+                converted[i] = CellRuntime.fromJava(values[i]);
+            }
+            t.raise(runtime.newExecution(), converted);
+            return true;
+        } catch (PonderError e) {
+            runtime.report(new Diagnostic(e.pos(), "raise " + templatePath + ": " + e.getMessage()));
+            return false;
+        } catch (ExitRequest exit) {
+            exitStatus = exit.status();
+            return false;
+        }
+    }
+
+    /** The status given to {@code root exit}, once it has run. */
+    public OptionalInt exitStatus() {
+        return exitStatus == null ? OptionalInt.empty() : OptionalInt.of(exitStatus);
+    }
+
+    /** The printed form of a value, as {@code root print:} shows it. */
+    public static String print(Object value) {
+        return Values.print(value);
+    }
+
+    /** The engine behind the facade, for layers that build on it (the core's Role-Manager, say). */
+    public CellRuntime runtime() {
+        return runtime;
+    }
+
+    /** Wraps a Java object with {@link net.smc.policy.runtime.Op} annotations as a managed object. */
+    public static ManagedObject manage(Object javaObject) {
+        return ManagedObject.wrap(javaObject);
+    }
+}

@@ -1,0 +1,326 @@
+package net.smc.policy.runtime;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.Consumer;
+import java.util.function.LongSupplier;
+import java.util.random.RandomGenerator;
+import net.smc.policy.AuthMode;
+import net.smc.policy.Diagnostic;
+import net.smc.policy.Limits;
+import net.smc.policy.PolicyRepository;
+import net.smc.policy.lang.IncludeResolver;
+import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.SourcePos;
+import net.smc.policy.lang.SyntaxError;
+import net.smc.policy.lang.Unit;
+
+/**
+ * The state of one self-managed cell's policy engine: the root domain, the registry of loadable
+ * classes, event delivery, authorisation, and the injected output, error reporter, clock and
+ * random source. Not thread-safe: a cell runs on one logical thread. Embedders use
+ * {@link net.smc.policy.Cell}.
+ */
+public final class CellRuntime {
+    /** Configuration given by the embedding application. */
+    public record Config(Consumer<String> output, Consumer<Diagnostic> errors, AuthMode auth, LongSupplier clock,
+                         RandomGenerator random, Limits limits, PolicyRepository repository,
+                         Map<String, Class<?>> classes) {
+    }
+
+    private final Config config;
+    private final Interpreter interpreter = new Interpreter(this);
+    private final Root root;
+    private final Map<String, Class<?>> registry = new LinkedHashMap<>();
+    private final Map<String, ManagedObject> factories = new HashMap<>();
+    private final Map<String, Path> files = new HashMap<>();
+    private final Authoriser authoriser;
+    private boolean booting = true;
+    private long attachCounter;
+
+    public CellRuntime(Config config) {
+        this.config = config;
+        this.authoriser = config.auth() == AuthMode.OFF ? null : new Authoriser(this, config.auth());
+        registry.put("Domain", Domain.class);
+        registry.put("EventTemplate", EventTemplate.class);
+        registry.put("ObligationPolicy", ObligationPolicy.class);
+        registry.put("AuthorisationPolicy", AuthorisationPolicy.class);
+        registry.put("DateTime", DateTime.class);
+        config.classes().forEach(this::register);
+        this.root = new Root(this);
+        Domain factory = new Domain(this);
+        factory.put("domain", factoryFor(Domain.class));
+        factory.put("event", factoryFor(EventTemplate.class));
+        factory.put("ecapolicy", factoryFor(ObligationPolicy.class));
+        factory.put("authpolicy", factoryFor(AuthorisationPolicy.class));
+        root.put("factory", factory);
+        root.put("event", new Domain(this));
+        root.put("policy", new Domain(this));
+    }
+
+    /** Makes a class loadable with {@code root load: "name"}; checks its annotations now. */
+    public void register(String name, Class<?> type) {
+        ManagedClass.of(type);
+        ManagedClass.factoryOf(type);
+        registry.put(name, type);
+        factories.remove(name);
+    }
+
+    private static ManagedObject factoryFor(Class<?> type) {
+        return new ManagedObject(type, ManagedClass.factoryOf(type));
+    }
+
+    /** The factory of a registered class ({@code root load:}). */
+    ManagedObject load(String name) {
+        Class<?> type = registry.get(name);
+        if (type == null) {
+            throw new PonderError("Load Managed Object - Adaptor for '" + name + "' not found");
+        }
+        return factories.computeIfAbsent(name, n -> factoryFor(type));
+    }
+
+    public Root root() {
+        return root;
+    }
+
+    public Interpreter interpreter() {
+        return interpreter;
+    }
+
+    public Limits limits() {
+        return config.limits();
+    }
+
+    public LongSupplier clock() {
+        return config.clock();
+    }
+
+    public RandomGenerator random() {
+        return config.random();
+    }
+
+    Authoriser authoriser() {
+        return authoriser;
+    }
+
+    /** Whether boot units are still running (authorisation then defaults to allow). */
+    public boolean booting() {
+        return booting;
+    }
+
+    /** Ends the boot phase: from now on the configured default decision applies. */
+    public void endBoot() {
+        booting = false;
+        if (authoriser != null) {
+            authoriser.invalidate();
+        }
+    }
+
+    void membershipChanged() {
+        if (authoriser != null) {
+            authoriser.invalidate();
+        }
+    }
+
+    long nextAttachOrder() {
+        return ++attachCounter;
+    }
+
+    /** Prints one line on the cell's output. */
+    void print(String line) {
+        config.output().accept(line);
+    }
+
+    /** Reports an error to the cell's error reporter. */
+    public void report(Diagnostic diagnostic) {
+        config.errors().accept(diagnostic);
+    }
+
+    /** A new run whose statements have root as their source. */
+    public Execution newExecution() {
+        return new Execution(this, root);
+    }
+
+    /** Parses a unit; syntax errors are reported. The file, when given, anchors includes and reads. */
+    public Unit parse(String source, String text, Path file) {
+        if (file != null) {
+            files.put(source, file.toAbsolutePath().normalize());
+        }
+        if (text.length() > config.limits().maxUnitChars()) {
+            SyntaxError tooLong = new SyntaxError(new SourcePos(source, 1, 1), "unit of " + text.length()
+                    + " characters is longer than the limit of " + config.limits().maxUnitChars());
+            report(new Diagnostic(tooLong.pos(), tooLong.message()));
+            return new Unit(source, List.of(), List.of(tooLong));
+        }
+        Unit unit = Parser.parse(source, text, this::resolveInclude);
+        for (SyntaxError e : unit.errors()) {
+            report(new Diagnostic(e.pos(), e.message()));
+        }
+        return unit;
+    }
+
+    /** The variables of a shell session, kept across its inputs. */
+    public static final class Variables {
+        private Map<String, Object> values = new HashMap<>();
+
+        /** A variable's value, or {@code null}. */
+        public Object get(String name) {
+            return values.get(name);
+        }
+    }
+
+    /**
+     * Runs a parsed unit (which must have no syntax errors) in a run of its own. A runtime error is
+     * reported and ends the unit; {@link ExitRequest} passes through.
+     *
+     * @return the value of the last statement, or {@code null} when the unit failed
+     */
+    public Object run(Unit unit, Variables variables) {
+        Execution ex = newExecution();
+        Frame frame = new Frame(ex, variables == null ? Map.of() : variables.values);
+        Interpreter.Compiled code = interpreter.compile(unit.statements());
+        try {
+            return interpreter.run(code, frame);
+        } catch (PonderError e) {
+            report(new Diagnostic(e.pos(), e.getMessage()));
+            return null;
+        } catch (StackOverflowError e) {
+            report(new Diagnostic(null, "stack exhausted while running " + unit.source()
+                    + "; lower the nesting or the call depth limit"));
+            return null;
+        } finally {
+            if (variables != null) {
+                Map<String, Object> kept = new HashMap<>(variables.values);
+                kept.putAll(frame.locals());
+                variables.values = kept;
+            }
+        }
+    }
+
+    /** Runs a unit nested in a running one ({@code readString:}, {@code read:}); errors propagate to it. */
+    Object runNested(Execution ex, String source, String text, Path file) {
+        Unit unit = parse(source, text, file);
+        if (unit.hasErrors()) {
+            throw new PonderError("cannot run '" + source + "': " + unit.errors().size() + " syntax error"
+                    + (unit.errors().size() == 1 ? "" : "s"));
+        }
+        Frame frame = new Frame(ex, Map.of());
+        return interpreter.run(interpreter.compile(unit.statements()), frame);
+    }
+
+    /** Reads the file or policy URI {@code name}, relative to the folder of {@code fromSource}. */
+    IncludeResolver.Included readFile(String name, String fromSource) {
+        Path file;
+        String shown;
+        if (PolicyRepository.isUri(name)) {
+            if (config.repository() == null) {
+                throw new PonderError("cannot read '" + name + "': no policy repository is configured");
+            }
+            try {
+                file = config.repository().pathOf(name);
+            } catch (IllegalArgumentException e) {
+                throw new PonderError(e.getMessage());
+            }
+            shown = name;
+        } else {
+            file = locate(name, fromSource).orElse(null);
+            shown = name;
+        }
+        if (file == null || !Files.isRegularFile(file)) {
+            return null;
+        }
+        try {
+            String text = Files.readString(file);
+            String source = PolicyRepository.isUri(shown) ? shown : file.getFileName().toString();
+            files.put(source, file.toAbsolutePath().normalize());
+            return new IncludeResolver.Included(source, text);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private Optional<Path> locate(String name, String fromSource) {
+        Path from = files.get(fromSource);
+        if (from != null) {
+            Path sibling = from.resolveSibling(name).normalize();
+            if (Files.isRegularFile(sibling)) {
+                return Optional.of(sibling);
+            }
+        }
+        Path plain = Path.of(name);
+        if (from == null && Files.isRegularFile(plain)) {
+            return Optional.of(plain);
+        }
+        return config.repository() == null ? Optional.empty() : config.repository().find(name);
+    }
+
+    private IncludeResolver.Included resolveInclude(String name, String fromSource) {
+        try {
+            return readFile(name, fromSource);
+        } catch (PonderError e) {
+            throw new UncheckedIOException(new IOException(e.getMessage()));
+        }
+    }
+
+    /** Converts a Java value to a PonderTalk value (ints to numbers, lists to arrays, maps to hashes ...). */
+    public static Object fromJava(Object value) {
+        return Converter.fromJava(value);
+    }
+
+    /** Resolves a path string: absolute when it starts with '/', else from root ({@code root/} optional). */
+    public Object resolve(String path) {
+        String body = path.startsWith("/") ? path.substring(1) : path;
+        if (body.equals("root")) {
+            return root;
+        }
+        if (body.startsWith("root/") && !path.startsWith("/")) {
+            body = body.substring(5);
+        }
+        Object at = root;
+        for (String segment : body.split("/", -1)) {
+            Object next = at instanceof Domain d ? d.get(segment) : null;
+            if (next == null) {
+                throw new PonderError("path not found '" + Numbers.abbreviate(path) + "'");
+            }
+            at = next;
+        }
+        return at;
+    }
+
+    /**
+     * Delivers an event synchronously: to the policies attached at its source and at every domain
+     * above it, each node once, in the order the policies were attached.
+     */
+    void deliver(Execution ex, EventTemplate template, Object[] values) {
+        Event event = new Event(template, values);
+        Object source = ex.source;
+        if (source == root || !(source instanceof ManagedObject start)) {
+            for (ObligationPolicy policy : root.policiesFor(template)) {
+                policy.fire(ex, event);
+            }
+            return;
+        }
+        List<ManagedObject> nodes = new ArrayList<>();
+        nodes.add(start);
+        for (int i = 0; i < nodes.size(); i++) {
+            for (Domain parent : nodes.get(i).parents()) {
+                if (!nodes.contains(parent)) {
+                    nodes.add(parent);
+                }
+            }
+        }
+        for (ManagedObject node : nodes) {
+            for (ObligationPolicy policy : node.policiesFor(template)) {
+                policy.fire(ex, event);
+            }
+        }
+    }
+}

@@ -1,0 +1,38 @@
+package net.smc.policy.runtime;
+
+import java.math.BigDecimal;
+
+/** The error object an {@code onError:} handler receives. */
+@Managed("Error")
+public final class ErrorValue {
+    private final PonderError error;
+
+    public ErrorValue(PonderError error) {
+        this.error = error;
+    }
+
+    @Op("message")
+    public String message() {
+        return error.getMessage();
+    }
+
+    @Op("source")
+    public Object source() {
+        return error.pos() == null ? Nil.NIL : error.pos().source();
+    }
+
+    @Op("line")
+    public BigDecimal line() {
+        return BigDecimal.valueOf(error.pos() == null ? 0 : error.pos().line());
+    }
+
+    @Op("char")
+    public BigDecimal column() {
+        return BigDecimal.valueOf(error.pos() == null ? 0 : error.pos().column());
+    }
+
+    @Override
+    public String toString() {
+        return error.describe();
+    }
+}

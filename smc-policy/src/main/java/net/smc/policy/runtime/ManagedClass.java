@@ -1,0 +1,178 @@
+package net.smc.policy.runtime;
+
+import java.lang.reflect.Constructor;
+import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
+import java.math.BigDecimal;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.Map;
+import java.util.TreeSet;
+import java.util.Set;
+
+/**
+ * The dispatch table of one kind of PonderTalk object, built once per Java class from its
+ * {@link Op} annotations: selector to {@link Operation}. Every table also answers {@code class},
+ * {@code self}, {@code ==} and {@code !=}, except nil's, which answers nothing.
+ */
+public final class ManagedClass {
+    private static final ClassValue<ManagedClass> MANAGED = new ClassValue<>() {
+        @Override
+        protected ManagedClass computeValue(Class<?> type) {
+            return build(displayName(type), type, Operation.Kind.INSTANCE, false);
+        }
+    };
+    private static final ClassValue<ManagedClass> FACTORIES = new ClassValue<>() {
+        @Override
+        protected ManagedClass computeValue(Class<?> type) {
+            return build("Factory", type, Operation.Kind.FACTORY, true);
+        }
+    };
+    private static final Map<String, Operation> COMMON = operations(ObjectOps.class, Operation.Kind.STATIC_RECEIVER, "Object");
+
+    static final ManagedClass NUMBER = values("Number", NumberOps.class);
+    static final ManagedClass STRING = values("String", StringOps.class);
+    static final ManagedClass BOOLEAN = values("Boolean", BooleanOps.class);
+    static final ManagedClass NIL = new ManagedClass("nil", Nil.class, Map.of(), false);
+
+    private final String name;
+    private final Class<?> javaClass;
+    private final Map<String, Operation> ops;
+    private final boolean factory;
+
+    private ManagedClass(String name, Class<?> javaClass, Map<String, Operation> ops, boolean factory) {
+        this.name = name;
+        this.javaClass = javaClass;
+        this.ops = ops;
+        this.factory = factory;
+    }
+
+    /**
+     * The table of a managed-object class (or of a value class such as {@link PArray}): its
+     * instance operations. Checks every annotation; a wrong arity is an
+     * {@link IllegalArgumentException} naming the method.
+     */
+    public static ManagedClass of(Class<?> type) {
+        return MANAGED.get(type);
+    }
+
+    /** The table of a class's factory: its annotated constructors and static methods. */
+    public static ManagedClass factoryOf(Class<?> type) {
+        return FACTORIES.get(type);
+    }
+
+    /** The table for any PonderTalk value. */
+    static ManagedClass typeOf(Object value) {
+        if (value instanceof ManagedObject m) {
+            return m.type();
+        }
+        if (value instanceof BigDecimal) {
+            return NUMBER;
+        }
+        if (value instanceof String) {
+            return STRING;
+        }
+        if (value instanceof Boolean) {
+            return BOOLEAN;
+        }
+        if (value instanceof Nil) {
+            return NIL;
+        }
+        return MANAGED.get(value.getClass());
+    }
+
+    /** How PonderTalk names a Java class: its {@link Managed} name, else its simple name. */
+    static String displayName(Class<?> type) {
+        Managed named = type.getAnnotation(Managed.class);
+        return named != null ? named.value() : type.getSimpleName();
+    }
+
+    private static ManagedClass values(String name, Class<?> holder) {
+        return new ManagedClass(name, holder, withCommon(operations(holder, Operation.Kind.STATIC_RECEIVER, name)), false);
+    }
+
+    private static ManagedClass build(String name, Class<?> type, Operation.Kind kind, boolean factory) {
+        Map<String, Operation> ops = operations(type, kind, factory ? name + " of " + displayName(type) : name);
+        return new ManagedClass(name, type, withCommon(ops), factory);
+    }
+
+    private static Map<String, Operation> withCommon(Map<String, Operation> own) {
+        Map<String, Operation> all = new HashMap<>(COMMON);
+        all.putAll(own);
+        return Map.copyOf(all);
+    }
+
+    private static Map<String, Operation> operations(Class<?> type, Operation.Kind kind, String owner) {
+        Map<String, Operation> ops = new HashMap<>();
+        if (kind == Operation.Kind.FACTORY) {
+            for (Constructor<?> c : type.getDeclaredConstructors()) {
+                Op op = c.getAnnotation(Op.class);
+                if (op != null) {
+                    put(ops, op.value(), Operation.of(op.value(), c, kind, owner), type);
+                }
+            }
+        }
+        for (Class<?> k = type; k != null && k != Object.class; k = k.getSuperclass()) {
+            for (Method m : k.getDeclaredMethods()) {
+                Op op = m.getAnnotation(Op.class);
+                if (op == null || m.isBridge()) {
+                    continue;
+                }
+                boolean isStatic = Modifier.isStatic(m.getModifiers());
+                boolean wanted = switch (kind) {
+                    case INSTANCE -> !isStatic;
+                    case STATIC_RECEIVER, FACTORY -> isStatic;
+                };
+                if (wanted && !ops.containsKey(op.value())) {
+                    put(ops, op.value(), Operation.of(op.value(), m, kind, owner), type);
+                }
+            }
+            if (kind != Operation.Kind.INSTANCE) {
+                break;
+            }
+        }
+        return ops;
+    }
+
+    private static void put(Map<String, Operation> ops, String selector, Operation op, Class<?> type) {
+        if (ops.putIfAbsent(selector, op) != null) {
+            throw new IllegalArgumentException("selector '" + selector + "' is defined twice in " + type.getName());
+        }
+    }
+
+    /** The operation for a selector, or {@code null}. */
+    Operation lookup(String selector) {
+        return ops.get(selector);
+    }
+
+    /** The error for a selector this class does not understand. */
+    PonderError unknown(String selector) {
+        if (factory) {
+            return new PonderError("unknown constructor or static operation: '" + selector + "'");
+        }
+        return new PonderError("unknown operation '" + selector + "' on " + name);
+    }
+
+    /** The class name PonderTalk shows. */
+    public String name() {
+        return name;
+    }
+
+    public Class<?> javaClass() {
+        return javaClass;
+    }
+
+    public boolean isFactory() {
+        return factory;
+    }
+
+    /** The selectors this class answers, sorted. */
+    public Set<String> selectors() {
+        return Collections.unmodifiableSet(new TreeSet<>(ops.keySet()));
+    }
+
+    @Override
+    public String toString() {
+        return name;
+    }
+}

@@ -1,0 +1,132 @@
+package net.smc.policy.runtime;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A managed object: something that sits in domains, has policies attached and answers the
+ * operations of its {@link ManagedClass}. Built-in kinds (domains, policies, event templates)
+ * extend this class; any other annotated Java object is wrapped in one.
+ */
+public class ManagedObject {
+    private final Object impl;
+    private final ManagedClass type;
+    private final List<Domain> parents = new ArrayList<>(1);
+    /** Obligation policies attached here, by the event template they react to, in attach order. */
+    private Map<EventTemplate, List<ObligationPolicy>> attached;
+
+    /** For subclasses: the object is its own implementation. */
+    protected ManagedObject() {
+        this.impl = this;
+        this.type = ManagedClass.of(getClass());
+    }
+
+    /** A handle for a Java object whose operations are given by {@code type}. */
+    protected ManagedObject(Object impl, ManagedClass type) {
+        this.impl = impl;
+        this.type = type;
+    }
+
+    /** Wraps a Java object whose class carries {@link Op} annotations. */
+    public static ManagedObject wrap(Object javaObject) {
+        if (javaObject instanceof ManagedObject m) {
+            return m;
+        }
+        return new ManagedObject(javaObject, ManagedClass.of(javaObject.getClass()));
+    }
+
+    /** The Java object whose methods implement the operations (this object for built-ins). */
+    public Object impl() {
+        return impl;
+    }
+
+    public ManagedClass type() {
+        return type;
+    }
+
+    /** The domains this object sits in, in the order it was added to them. */
+    public List<Domain> parents() {
+        return Collections.unmodifiableList(parents);
+    }
+
+    void addParent(Domain d) {
+        if (!parents.contains(d)) {
+            parents.add(d);
+        }
+    }
+
+    void removeParent(Domain d) {
+        parents.remove(d);
+    }
+
+    /** The first path from root to this object ({@code root/a/b}), or {@code null} if it is in no domain tree. */
+    public String path() {
+        StringBuilder path = new StringBuilder();
+        ManagedObject at = this;
+        for (int hops = 0; hops < 64; hops++) {
+            if (at instanceof Root) {
+                path.insert(0, "root");
+                return path.toString();
+            }
+            if (at.parents.isEmpty()) {
+                return null;
+            }
+            Domain parent = at.parents.get(0);
+            String name = parent.nameOf(at);
+            if (name == null) {
+                return null;
+            }
+            path.insert(0, "/" + name);
+            at = parent;
+        }
+        return null;
+    }
+
+    void attach(ObligationPolicy policy) {
+        if (attached == null) {
+            attached = new HashMap<>();
+        }
+        List<ObligationPolicy> list = attached.computeIfAbsent(policy.template(), t -> new ArrayList<>());
+        if (list.contains(policy)) {
+            return;
+        }
+        int at = list.size();
+        while (at > 0 && list.get(at - 1).attachOrder() > policy.attachOrder()) {
+            at--;
+        }
+        list.add(at, policy);
+    }
+
+    void detach(ObligationPolicy policy, EventTemplate template) {
+        if (attached == null) {
+            return;
+        }
+        List<ObligationPolicy> list = attached.get(template);
+        if (list != null) {
+            list.remove(policy);
+            if (list.isEmpty()) {
+                attached.remove(template);
+            }
+        }
+    }
+
+    /** The policies attached here that react to {@code template}, or an empty array. */
+    ObligationPolicy[] policiesFor(EventTemplate template) {
+        if (attached == null) {
+            return NO_POLICIES;
+        }
+        List<ObligationPolicy> list = attached.get(template);
+        return list == null ? NO_POLICIES : list.toArray(NO_POLICIES);
+    }
+
+    private static final ObligationPolicy[] NO_POLICIES = new ObligationPolicy[0];
+
+    @Override
+    public String toString() {
+        String path = path();
+        return path == null ? "<" + type.name() + ">" : "<" + type.name() + " " + path + ">";
+    }
+}

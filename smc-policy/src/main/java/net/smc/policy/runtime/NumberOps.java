@@ -1,0 +1,90 @@
+package net.smc.policy.runtime;
+
+import java.math.BigDecimal;
+
+/** Operations of numbers ({@link BigDecimal}, as Ponder2). */
+final class NumberOps {
+    private NumberOps() {
+    }
+
+    @Op("+")
+    static BigDecimal plus(BigDecimal self, BigDecimal other) {
+        return Numbers.add(self, other);
+    }
+
+    @Op("-")
+    static BigDecimal minus(BigDecimal self, BigDecimal other) {
+        return Numbers.subtract(self, other);
+    }
+
+    @Op("*")
+    static BigDecimal times(BigDecimal self, BigDecimal other) {
+        return Numbers.multiply(self, other);
+    }
+
+    @Op("/")
+    static BigDecimal divide(BigDecimal self, BigDecimal other) {
+        return Numbers.divide(self, other);
+    }
+
+    @Op("<")
+    static boolean less(BigDecimal self, BigDecimal other) {
+        return self.compareTo(other) < 0;
+    }
+
+    @Op(">")
+    static boolean greater(BigDecimal self, BigDecimal other) {
+        return self.compareTo(other) > 0;
+    }
+
+    @Op("<=")
+    static boolean lessOrEqual(BigDecimal self, BigDecimal other) {
+        return self.compareTo(other) <= 0;
+    }
+
+    @Op(">=")
+    static boolean greaterOrEqual(BigDecimal self, BigDecimal other) {
+        return self.compareTo(other) >= 0;
+    }
+
+    /** Runs the block for 0 up to the receiver minus one. */
+    @Op("do:")
+    static BigDecimal each(CallContext ctx, BigDecimal self, Block body) {
+        long n = count(self);
+        for (long i = 0; i < n; i++) {
+            ctx.call(body, BigDecimal.valueOf(i));
+        }
+        return self;
+    }
+
+    @Op("collect:")
+    static PArray collect(CallContext ctx, BigDecimal self, Block body) {
+        long n = count(self);
+        PArray out = new PArray();
+        for (long i = 0; i < n; i++) {
+            out.add(ctx.call(body, BigDecimal.valueOf(i)));
+        }
+        return out;
+    }
+
+    /** A whole number in [0, receiver), from the cell's random source. */
+    @Op("random")
+    static BigDecimal random(CallContext ctx, BigDecimal self) {
+        long n = count(self);
+        if (n <= 0) {
+            throw new PonderError("random needs a positive number, got " + self);
+        }
+        return BigDecimal.valueOf(ctx.runtime().random().nextLong(n));
+    }
+
+    private static long count(BigDecimal n) {
+        if (n.signum() <= 0) {
+            return 0;
+        }
+        try {
+            return n.setScale(0, java.math.RoundingMode.CEILING).longValueExact();
+        } catch (ArithmeticException e) {
+            return Long.MAX_VALUE;
+        }
+    }
+}

@@ -1,0 +1,195 @@
+package net.smc.policy.runtime;
+
+import java.util.ArrayList;
+import java.util.List;
+import net.smc.policy.Diagnostic;
+import net.smc.policy.lang.SourcePos;
+
+/**
+ * An obligation (event-condition-action) policy. Created inactive; reacts to events of one
+ * template at the nodes it is attached to; conditions are ANDed in order, then every action runs.
+ * Block parameters bind by name to the event's attributes. Errors are reported, or given to the
+ * {@code onError:} handler, and never reach the script that raised the event.
+ */
+@Managed("ObligationPolicy")
+public final class ObligationPolicy extends ManagedObject {
+    private final CellRuntime runtime;
+    private EventTemplate template;
+    private final List<Block> conditions = new ArrayList<>();
+    private final List<Block> actions = new ArrayList<>();
+    private final List<Boolean> wholeEvent = new ArrayList<>();
+    private final List<ManagedObject> attachedTo = new ArrayList<>();
+    private Block errorHandler;
+    private boolean active;
+    private long attachOrder;
+
+    public ObligationPolicy(CellRuntime runtime) {
+        this.runtime = runtime;
+    }
+
+    @Op("create")
+    static ObligationPolicy create(CallContext ctx) {
+        return new ObligationPolicy(ctx.runtime());
+    }
+
+    EventTemplate template() {
+        return template;
+    }
+
+    long attachOrder() {
+        return attachOrder;
+    }
+
+    public boolean isActive() {
+        return active;
+    }
+
+    @Op("event:")
+    public EventTemplate event(EventTemplate newTemplate) {
+        if (template != null) {
+            for (ManagedObject node : attachedTo) {
+                node.detach(this, template);
+            }
+        }
+        template = newTemplate;
+        for (ManagedObject node : attachedTo) {
+            node.attach(this);
+        }
+        return newTemplate;
+    }
+
+    @Op("condition:")
+    public ObligationPolicy condition(Block condition) {
+        conditions.add(condition);
+        return this;
+    }
+
+    @Op("action:")
+    public ObligationPolicy action(Block action) {
+        actions.add(action);
+        wholeEvent.add(false);
+        return this;
+    }
+
+    /** An action that receives the whole event as one hash. */
+    @Op("eaction:")
+    public ObligationPolicy eaction(Block action) {
+        actions.add(action);
+        wholeEvent.add(true);
+        return this;
+    }
+
+    @Op("active:")
+    public boolean active(boolean on) {
+        active = on;
+        if (on && attachedTo.isEmpty()) {
+            attach(runtime.root());
+        }
+        return on;
+    }
+
+    @Op("active")
+    public boolean active() {
+        return active;
+    }
+
+    @Op("attach:")
+    public ObligationPolicy attach(ManagedObject node) {
+        if (!attachedTo.contains(node)) {
+            if (attachOrder == 0) {
+                attachOrder = runtime.nextAttachOrder();
+            }
+            attachedTo.add(node);
+            if (template != null) {
+                node.attach(this);
+            }
+        }
+        return this;
+    }
+
+    /** Detaches the policy from a node (an extension of Ponder2's selectors). */
+    @Op("detach:")
+    public ObligationPolicy detach(ManagedObject node) {
+        if (attachedTo.remove(node) && template != null) {
+            node.detach(this, template);
+        }
+        return this;
+    }
+
+    @Op("onError:")
+    public ObligationPolicy onError(Block handler) {
+        errorHandler = handler;
+        return this;
+    }
+
+    /** Runs the policy for one event, with itself as the source of its statements. */
+    void fire(Execution ex, Event event) {
+        if (!active) {
+            return;
+        }
+        Object previous = ex.source;
+        ex.source = this;
+        try {
+            for (Block condition : conditions) {
+                Object answer;
+                try {
+                    answer = runtime.interpreter().call(ex, condition, bind(condition, event));
+                } catch (UnitAbort abort) {
+                    throw abort;
+                } catch (PonderError e) {
+                    failed(ex, "condition", e.at(condition.pos()));
+                    return;
+                }
+                if (answer != Boolean.TRUE) {
+                    if (answer != Boolean.FALSE) {
+                        failed(ex, "condition", new PonderError("condition answered "
+                                + Numbers.abbreviate(Values.print(answer)) + ", not a boolean", condition.pos()));
+                    }
+                    return;
+                }
+            }
+            for (int i = 0; i < actions.size(); i++) {
+                Block action = actions.get(i);
+                try {
+                    Object[] args = wholeEvent.get(i) ? new Object[] {event.asHash()} : bind(action, event);
+                    runtime.interpreter().call(ex, action, args);
+                } catch (UnitAbort abort) {
+                    throw abort;
+                } catch (PonderError e) {
+                    failed(ex, "action", e.at(action.pos()));
+                }
+            }
+        } finally {
+            ex.source = previous;
+        }
+    }
+
+    private static Object[] bind(Block block, Event event) {
+        String[] params = block.code.params;
+        Object[] args = new Object[params.length];
+        for (int i = 0; i < params.length; i++) {
+            Object v = event.get(params[i]);
+            if (v == null) {
+                throw new PonderError("hash key '" + params[i] + "' not found");
+            }
+            args[i] = v;
+        }
+        return args;
+    }
+
+    private void failed(Execution ex, String where, PonderError error) {
+        if (errorHandler != null) {
+            try {
+                runtime.interpreter().call(ex, errorHandler, new ErrorValue(error));
+                return;
+            } catch (UnitAbort abort) {
+                throw abort;
+            } catch (PonderError handlerError) {
+                error = handlerError.at(errorHandler.pos());
+                where = "onError";
+            }
+        }
+        SourcePos pos = error.pos();
+        runtime.report(new Diagnostic(pos, "ObligationPolicy: unhandled " + where + " error: " + error.getMessage()));
+    }
+}

@@ -1,0 +1,50 @@
+package net.smc.policy.runtime;
+
+import java.math.BigDecimal;
+
+/** Operations of strings. */
+final class StringOps {
+    /** Longest string {@code *} builds, in characters. */
+    static final int MAX_REPEAT_LENGTH = 64 * 1024 * 1024;
+
+    private StringOps() {
+    }
+
+    /** Concatenates the argument's printed form. */
+    @Op("+")
+    static String concat(String self, Object other) {
+        String tail = Values.print(other);
+        if ((long) self.length() + tail.length() > MAX_REPEAT_LENGTH) {
+            throw new PonderError("string longer than " + MAX_REPEAT_LENGTH + " characters");
+        }
+        return self + tail;
+    }
+
+    @Op("*")
+    static String repeat(String self, BigDecimal times) {
+        Integer n = Numbers.intValue(times);
+        if (n == null || n < 0) {
+            throw new PonderError("cannot repeat a string " + times + " times");
+        }
+        if ((long) self.length() * n > MAX_REPEAT_LENGTH) {
+            throw new PonderError("string longer than " + MAX_REPEAT_LENGTH + " characters");
+        }
+        return self.repeat(n);
+    }
+
+    @Op("asString")
+    static String asString(String self) {
+        return self;
+    }
+
+    @Op("isEmpty")
+    static boolean isEmpty(String self) {
+        return self.isEmpty();
+    }
+
+    /** Resolves the string as a path: absolute when it starts with '/', else from root. */
+    @Op("asObject")
+    static Object asObject(CallContext ctx, String self) {
+        return ctx.runtime().resolve(self);
+    }
+}

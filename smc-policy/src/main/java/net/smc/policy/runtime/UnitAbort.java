@@ -1,0 +1,11 @@
+package net.smc.policy.runtime;
+
+/**
+ * A runtime error that stops the whole unit even inside a policy, which otherwise contains
+ * errors: a limit of the unit was hit (steps), or the stack ran out.
+ */
+public final class UnitAbort extends PonderError {
+    public UnitAbort(String message) {
+        super(message);
+    }
+}

@@ -1,0 +1,102 @@
+package net.smc.policy.runtime;
+
+import java.math.BigDecimal;
+import java.util.Map;
+
+/** Printing, equality and class names of PonderTalk values: one place for the rules of PONDERTALK.md section 5. */
+public final class Values {
+    private Values() {
+    }
+
+    /** The printed form of a value, as {@code root print:} shows it. */
+    public static String print(Object value) {
+        if (value instanceof String s) {
+            return s;
+        }
+        if (value instanceof BigDecimal n) {
+            return n.toString();
+        }
+        if (value instanceof PArray a) {
+            StringBuilder out = new StringBuilder("[");
+            for (int i = 0; i < a.size(); i++) {
+                if (i > 0) {
+                    out.append(", ");
+                }
+                out.append(print(a.get(i)));
+            }
+            return out.append(']').toString();
+        }
+        if (value instanceof PHash h) {
+            StringBuilder out = new StringBuilder("{ ");
+            for (Map.Entry<String, Object> e : h.entries()) {
+                out.append(e.getKey()).append("=\"").append(print(e.getValue())).append("\" ");
+            }
+            return out.append('}').toString();
+        }
+        return String.valueOf(value);
+    }
+
+    /** PonderTalk's class name of a value. */
+    public static String className(Object value) {
+        if (value instanceof BigDecimal) {
+            return "Number";
+        }
+        if (value instanceof String) {
+            return "String";
+        }
+        if (value instanceof Boolean) {
+            return "Boolean";
+        }
+        if (value instanceof PArray) {
+            return "Array";
+        }
+        if (value instanceof PHash) {
+            return "Hash";
+        }
+        if (value instanceof Block) {
+            return "Block";
+        }
+        if (value instanceof Nil) {
+            return "nil";
+        }
+        if (value instanceof ManagedObject m) {
+            return m.type().name();
+        }
+        if (value instanceof ErrorValue) {
+            return "Error";
+        }
+        return value.getClass().getSimpleName();
+    }
+
+    /**
+     * {@code ==}: value equality for numbers (numerically), strings and booleans; identity for
+     * everything else. A string equals a non-string by the other's printed form.
+     */
+    public static boolean same(Object a, Object b) {
+        if (a == b) {
+            return true;
+        }
+        if (a instanceof BigDecimal x) {
+            if (b instanceof BigDecimal y) {
+                return x.compareTo(y) == 0;
+            }
+            if (b instanceof String s) {
+                BigDecimal y = Numbers.tryParse(s);
+                return y != null && x.compareTo(y) == 0;
+            }
+            return false;
+        }
+        if (a instanceof String s) {
+            return s.equals(print(b));
+        }
+        if (a instanceof Boolean) {
+            return a.equals(b);
+        }
+        return false;
+    }
+
+    /** Whether a value is a plain value (never checked by authorisation, never in a domain's parent lists). */
+    public static boolean isValue(Object v) {
+        return !(v instanceof ManagedObject);
+    }
+}
