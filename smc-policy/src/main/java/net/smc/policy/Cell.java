@@ -212,22 +212,43 @@ public final class Cell {
      * @return {@code false} when the event could not be raised (the error was reported)
      */
     public boolean raise(String templatePath, Object... values) {
+        EventTemplate template;
+        try {
+            template = template(templatePath);
+        } catch (PonderError e) {
+            runtime.report(new Diagnostic(null, "raise " + templatePath + ": " + e.getMessage()));
+            return false;
+        }
+        return raise(template, values);
+    }
+
+    /**
+     * The event template at a path, for raising events without resolving the path each time.
+     *
+     * @throws PonderError when there is nothing at the path or it is not an event template
+     */
+    public EventTemplate template(String path) {
+        Object found = runtime.resolve(path);
+        if (!(found instanceof EventTemplate t)) {
+            throw new PonderError("'" + path + "' is a " + Values.className(found) + ", not an EventTemplate");
+        }
+        return t;
+    }
+
+    /** Raises an event of a template from Java, as {@link #raise(String, Object...)} does. */
+    public boolean raise(EventTemplate template, Object... values) {
         if (exitStatus != null) {
             return false;
         }
         try {
-            Object template = runtime.resolve(templatePath);
-            if (!(template instanceof EventTemplate t)) {
-                throw new PonderError("'" + templatePath + "' is a " + Values.className(template) + ", not an EventTemplate");
-            }
             Object[] converted = new Object[values.length];
             for (int i = 0; i < values.length; i++) {
                 converted[i] = CellRuntime.fromJava(values[i]);
             }
-            t.raise(runtime.newExecution(), converted);
+            template.raise(runtime.newExecution(), converted);
             return true;
         } catch (PonderError e) {
-            runtime.report(new Diagnostic(e.pos(), "raise " + templatePath + ": " + e.getMessage()));
+            runtime.report(new Diagnostic(e.pos(), "raise: " + e.getMessage()));
             return false;
         } catch (ExitRequest exit) {
             exitStatus = exit.status();

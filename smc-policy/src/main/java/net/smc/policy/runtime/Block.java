@@ -1,21 +1,20 @@
 package net.smc.policy.runtime;
 
 import java.util.List;
-import java.util.Map;
 import net.smc.policy.lang.SourcePos;
 
 /**
- * A block: code with the variable bindings that existed when it was created (a frozen copy,
- * PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
+ * A block: code with the values, frozen when it was created, of the variables its code reads
+ * (PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
  * its handler.
  */
 public final class Block {
     final Interpreter.BlockCode code;
-    final Map<String, Object> captured;
+    final Object[] captured;
     final Block guarded;
     final Block handler;
 
-    Block(Interpreter.BlockCode code, Map<String, Object> captured) {
+    Block(Interpreter.BlockCode code, Object[] captured) {
         this.code = code;
         this.captured = captured;
         this.guarded = null;

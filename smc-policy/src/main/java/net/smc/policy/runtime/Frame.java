@@ -1,55 +1,69 @@
 package net.smc.policy.runtime;
 
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
 
 /**
- * The variables of one unit or one block call: the bindings captured when the block was created
- * (read-only, shared by every call) plus this call's own (parameters and assignments), which
- * vanish with the call. Names are interned by the compiler, so lookups mostly compare references.
+ * The variables of one unit or one block call. A block call sees the values its block captured
+ * when it was created (only the names its code reads, frozen then) plus its own parameters and
+ * assignments, which vanish with the call. A unit sees the variables a shell session kept plus its
+ * own. Names are interned by the compiler, so lookups compare references.
  */
 final class Frame {
     private static final int SMALL = 16;
+    private static final String[] NONE = new String[0];
 
     final Execution ex;
-    private final Map<String, Object> captured;
+    private final String[] capturedNames;
+    private final Object[] capturedValues;
+    private final Map<String, Object> outer;
     private String[] names;
     private Object[] values;
     private int count;
     private HashMap<String, Object> many;
 
-    Frame(Execution ex, Map<String, Object> captured) {
+    /** A unit's frame; {@code outer} holds a session's kept variables (read-only here). */
+    Frame(Execution ex, Map<String, Object> outer) {
         this.ex = ex;
-        this.captured = captured;
+        this.capturedNames = NONE;
+        this.capturedValues = null;
+        this.outer = outer;
         this.names = new String[4];
         this.values = new Object[4];
     }
 
-    /** A block call's frame; {@code params} is not copied and must not be changed. */
-    Frame(Execution ex, Map<String, Object> captured, String[] params, Object[] args) {
+    /** A block call's frame; {@code params} is shared and never changed. */
+    Frame(Execution ex, String[] capturedNames, Object[] capturedValues, String[] params, Object[] args) {
         this.ex = ex;
-        this.captured = captured;
+        this.capturedNames = capturedNames;
+        this.capturedValues = capturedValues;
+        this.outer = Map.of();
         this.names = params;
-        this.values = args.length == params.length ? args : java.util.Arrays.copyOf(args, params.length);
+        this.values = args.length == params.length ? args : Arrays.copyOf(args, params.length);
         this.count = params.length;
     }
 
+    /** The variable's value, or {@code null} when there is no such variable. */
     Object lookup(String name) {
         if (many != null) {
             Object v = many.get(name);
-            return v != null ? v : captured.get(name);
-        }
-        for (int i = count - 1; i >= 0; i--) {
-            if (names[i] == name) {
-                return values[i];
+            if (v != null) {
+                return v;
+            }
+        } else {
+            for (int i = count - 1; i >= 0; i--) {
+                if (names[i] == name) {
+                    return values[i];
+                }
             }
         }
-        for (int i = count - 1; i >= 0; i--) {
-            if (names[i].equals(name)) {
-                return values[i];
+        for (int i = 0; i < capturedNames.length; i++) {
+            if (capturedNames[i] == name) {
+                return capturedValues[i];
             }
         }
-        return captured.isEmpty() ? null : captured.get(name);
+        return outer.isEmpty() ? null : outer.get(name);
     }
 
     void set(String name, Object value) {
@@ -58,7 +72,7 @@ final class Frame {
             return;
         }
         for (int i = 0; i < count; i++) {
-            if (names[i] == name || names[i].equals(name)) {
+            if (names[i] == name) {
                 values[i] = value;
                 return;
             }
@@ -72,28 +86,21 @@ final class Frame {
             return;
         }
         if (count == names.length) {
-            names = java.util.Arrays.copyOf(names, Math.max(4, count * 2));
-            values = java.util.Arrays.copyOf(values, names.length);
+            names = Arrays.copyOf(names, Math.max(4, count * 2));
+            values = Arrays.copyOf(values, names.length);
         }
         names[count] = name;
         values[count] = value;
         count++;
     }
 
-    /** The bindings a block created now captures: everything visible, frozen. */
-    Map<String, Object> snapshot() {
-        if (count == 0 && many == null) {
-            return captured;
+    /** The current values of {@code free} (null where a name is not a variable), for a new block. */
+    Object[] capture(String[] free) {
+        Object[] captured = new Object[free.length];
+        for (int i = 0; i < free.length; i++) {
+            captured[i] = lookup(free[i]);
         }
-        HashMap<String, Object> all = new HashMap<>(captured);
-        if (many != null) {
-            all.putAll(many);
-        } else {
-            for (int i = 0; i < count; i++) {
-                all.put(names[i], values[i]);
-            }
-        }
-        return all;
+        return captured;
     }
 
     /** The unit's own variables (for a shell session that keeps them across inputs). */

@@ -1,7 +1,8 @@
 package net.smc.policy.runtime;
 
+import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
+import java.util.Set;
 import net.smc.policy.lang.Node;
 import net.smc.policy.lang.SourcePos;
 
@@ -62,7 +63,13 @@ public final class Interpreter {
         }
         if (node instanceof Node.BlockLiteral block) {
             String[] params = block.params().stream().map(String::intern).toArray(String[]::new);
-            return new BlockCode(params, compileAll(block.statements()), block.pos());
+            Set<String> free = new LinkedHashSet<>();
+            for (Node statement : block.statements()) {
+                readNames(statement, free);
+            }
+            free.removeAll(List.of(params));
+            String[] freeNames = free.stream().map(String::intern).toArray(String[]::new);
+            return new BlockCode(params, freeNames, compileAll(block.statements()), block.pos());
         }
         if (node instanceof Node.Send send) {
             return new SendCode(this, compile(send.receiver()), send.message());
@@ -77,6 +84,27 @@ public final class Interpreter {
             }
         }
         return new CascadeCode(compile(cascade.receiver()), chains);
+    }
+
+    /** Collects the first segment of every relative name the node reads, nested blocks included. */
+    private static void readNames(Node node, Set<String> out) {
+        if (node instanceof Node.Name name) {
+            if (!name.absolute()) {
+                out.add(name.segments().get(0));
+            }
+        } else if (node instanceof Node.Assign assign) {
+            readNames(assign.value(), out);
+        } else if (node instanceof Node.ArrayLiteral array) {
+            array.elements().forEach(e -> readNames(e, out));
+        } else if (node instanceof Node.BlockLiteral block) {
+            block.statements().forEach(s -> readNames(s, out));
+        } else if (node instanceof Node.Send send) {
+            readNames(send.receiver(), out);
+            send.message().args().forEach(a -> readNames(a, out));
+        } else if (node instanceof Node.Cascade cascade) {
+            readNames(cascade.receiver(), out);
+            cascade.chains().forEach(chain -> chain.forEach(m -> m.args().forEach(a -> readNames(a, out))));
+        }
     }
 
     /** Runs compiled statements in a frame; answers the last statement's value. */
@@ -109,7 +137,7 @@ public final class Interpreter {
         }
         ex.depth++;
         try {
-            Frame frame = new Frame(ex, block.captured, code.params, args);
+            Frame frame = new Frame(ex, code.free, block.captured, code.params, args);
             Object value = Nil.NIL;
             for (Code statement : code.body) {
                 value = statement.exec(frame);
@@ -121,7 +149,8 @@ public final class Interpreter {
     }
 
     /** Sends a message from Java, as a statement would. */
-    Object send(Execution ex, Object receiver, String selector, Object[] args, SourcePos pos) {
+    Object send(Execution ex, Object receiver, String selector, Object[] arguments, SourcePos pos) {
+        Object[] args = arguments.clone();
         ManagedClass type = ManagedClass.typeOf(receiver);
         Operation op = type.lookup(selector);
         if (op == null) {
@@ -251,19 +280,21 @@ public final class Interpreter {
     /** A block literal; executing it makes a {@link Block} that captures the frame's bindings. */
     static final class BlockCode extends Code {
         final String[] params;
+        /** The names the block's code reads that are not its parameters: what it captures. */
+        final String[] free;
         final Code[] body;
         final SourcePos pos;
 
-        BlockCode(String[] params, Code[] body, SourcePos pos) {
+        BlockCode(String[] params, String[] free, Code[] body, SourcePos pos) {
             this.params = params;
+            this.free = free;
             this.body = body;
             this.pos = pos;
         }
 
         @Override
         Object exec(Frame f) {
-            Map<String, Object> snapshot = f.snapshot();
-            return new Block(this, snapshot);
+            return new Block(this, f.capture(free));
         }
     }
 

@@ -1,6 +1,7 @@
 package net.smc.policy.runtime;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
@@ -16,7 +17,7 @@ public class ManagedObject {
     private final ManagedClass type;
     private final List<Domain> parents = new ArrayList<>(1);
     /** Obligation policies attached here, by the event template they react to, in attach order. */
-    private Map<EventTemplate, List<ObligationPolicy>> attached;
+    private Map<EventTemplate, ObligationPolicy[]> attached;
 
     /** For subclasses: the object is its own implementation. */
     protected ManagedObject() {
@@ -89,37 +90,46 @@ public class ManagedObject {
         if (attached == null) {
             attached = new HashMap<>();
         }
-        List<ObligationPolicy> list = attached.computeIfAbsent(policy.template(), t -> new ArrayList<>());
-        if (list.contains(policy)) {
-            return;
+        ObligationPolicy[] list = attached.getOrDefault(policy.template(), NO_POLICIES);
+        for (ObligationPolicy p : list) {
+            if (p == policy) {
+                return;
+            }
         }
-        int at = list.size();
-        while (at > 0 && list.get(at - 1).attachOrder() > policy.attachOrder()) {
+        int at = list.length;
+        while (at > 0 && list[at - 1].attachOrder() > policy.attachOrder()) {
             at--;
         }
-        list.add(at, policy);
+        ObligationPolicy[] grown = new ObligationPolicy[list.length + 1];
+        System.arraycopy(list, 0, grown, 0, at);
+        grown[at] = policy;
+        System.arraycopy(list, at, grown, at + 1, list.length - at);
+        attached.put(policy.template(), grown);
     }
 
     void detach(ObligationPolicy policy, EventTemplate template) {
-        if (attached == null) {
+        ObligationPolicy[] list = attached == null ? null : attached.get(template);
+        if (list == null) {
             return;
         }
-        List<ObligationPolicy> list = attached.get(template);
-        if (list != null) {
-            list.remove(policy);
-            if (list.isEmpty()) {
-                attached.remove(template);
-            }
+        ObligationPolicy[] kept = Arrays.stream(list).filter(p -> p != policy).toArray(ObligationPolicy[]::new);
+        if (kept.length == 0) {
+            attached.remove(template);
+        } else {
+            attached.put(template, kept);
         }
     }
 
-    /** The policies attached here that react to {@code template}, or an empty array. */
+    /**
+     * The policies attached here that react to {@code template}, in attach order. The array is
+     * never changed (attaching makes a new one), so delivery may iterate it while policies change.
+     */
     ObligationPolicy[] policiesFor(EventTemplate template) {
         if (attached == null) {
             return NO_POLICIES;
         }
-        List<ObligationPolicy> list = attached.get(template);
-        return list == null ? NO_POLICIES : list.toArray(NO_POLICIES);
+        ObligationPolicy[] list = attached.get(template);
+        return list == null ? NO_POLICIES : list;
     }
 
     private static final ObligationPolicy[] NO_POLICIES = new ObligationPolicy[0];

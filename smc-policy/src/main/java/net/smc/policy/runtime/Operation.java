@@ -125,16 +125,14 @@ final class Operation {
     /**
      * Runs the operation. {@code target} is what the Java code receives (the implementation
      * object); {@code answerForVoid} is what a method returning nothing answers (the receiver).
+     * The arguments are converted in place: {@code args} must belong to this call.
      */
     Object invoke(CallContext context, Object target, Object[] args, Object answerForVoid) {
         Object[] a = args;
         for (int i = 0; i < converters.length; i++) {
             Converter c = converters[i];
             if (c != null) {
-                if (a == args) {
-                    a = args.clone();
-                }
-                a[i] = c.convert(args[i]);
+                a[i] = c.convert(a[i]);
             }
         }
         Object ctx = wantsContext ? context : null;
