@@ -1,0 +1,81 @@
+package net.smc.demo;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import net.smc.policy.AuthMode;
+import net.smc.policy.PolicyRepository;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.TypeConversionException;
+
+/**
+ * The options {@code run} and {@code shell} share ({@code --auth}, {@code --repository}), and the
+ * checks of their arguments that make a usage error (exit status 2) before anything runs.
+ */
+final class CellOptions {
+    /** The repository used when {@code --repository} is not given, if the current directory has it. */
+    static final String DEFAULT_REPOSITORY = "policies";
+
+    @Option(names = "--auth", paramLabel = "allow|deny", converter = AuthConverter.class,
+            description = "Check authorisation policies; when none decides, allow or deny. "
+                    + "The files given run as boot units, during which the default is allow. "
+                    + "Without this option nothing is checked.")
+    AuthMode auth = AuthMode.OFF;
+
+    @Option(names = "--repository", paramLabel = "DIR",
+            description = "The policy repository that policy: URIs and includes resolve against "
+                    + "(default: the " + DEFAULT_REPOSITORY + "/ folder of the current directory, if there is one).")
+    Path repository;
+
+    /** The policy repository to use, or {@code null} when there is none. */
+    PolicyRepository repository(CommandSpec spec, Path workingDir) {
+        if (repository == null) {
+            Path fallback = workingDir.resolve(DEFAULT_REPOSITORY);
+            return Files.isDirectory(fallback) ? new PolicyRepository(fallback) : null;
+        }
+        Path dir = workingDir.resolve(repository);
+        if (!Files.isDirectory(dir)) {
+            throw new ParameterException(spec.commandLine(), "--repository '" + repository + "': "
+                    + (Files.exists(dir) ? "not a directory" : "no such directory"));
+        }
+        return new PolicyRepository(dir);
+    }
+
+    /**
+     * The files resolved against the working directory, each checked to be a readable regular file.
+     *
+     * @throws ParameterException naming the first file that is not, and why
+     */
+    static List<Path> readableFiles(CommandSpec spec, Path workingDir, List<Path> files) {
+        List<Path> resolved = new ArrayList<>();
+        for (Path given : files) {
+            Path file = workingDir.resolve(given);
+            String problem = !Files.exists(file) ? "no such file"
+                    : Files.isDirectory(file) ? "is a directory"
+                    : !Files.isRegularFile(file) ? "not a regular file"
+                    : !Files.isReadable(file) ? "permission denied"
+                    : null;
+            if (problem != null) {
+                throw new ParameterException(spec.commandLine(), "cannot read '" + given + "': " + problem);
+            }
+            resolved.add(file);
+        }
+        return resolved;
+    }
+
+    /** {@code allow} or {@code deny}, exactly. */
+    static final class AuthConverter implements ITypeConverter<AuthMode> {
+        @Override
+        public AuthMode convert(String value) {
+            return switch (value) {
+                case "allow" -> AuthMode.ALLOW;
+                case "deny" -> AuthMode.DENY;
+                default -> throw new TypeConversionException("'" + value + "' is neither 'allow' nor 'deny'");
+            };
+        }
+    }
+}
