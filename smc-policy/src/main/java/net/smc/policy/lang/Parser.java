@@ -244,14 +244,9 @@ public final class Parser {
             }
             case LPAREN -> {
                 advance();
-                enter();
-                try {
-                    Node inner = statement();
-                    expect(TokenKind.RPAREN, "')'");
-                    return inner;
-                } finally {
-                    depth--;
-                }
+                Node inner = statement();
+                expect(TokenKind.RPAREN, "')'");
+                return inner;
             }
             case ARRAY_START -> {
                 return array();
@@ -290,37 +285,32 @@ public final class Parser {
 
     private Node block() {
         Token start = advance();
-        enter();
-        try {
-            List<String> params = new ArrayList<>();
-            if (check(TokenKind.PARAM)) {
-                while (check(TokenKind.PARAM)) {
-                    params.add(advance().text());
-                }
-                Token bar = peek();
-                if (bar.kind() != TokenKind.BINOP || !bar.text().equals("|")) {
-                    throw error(bar, "expected '|' after the block parameters, found " + bar.describe());
-                }
-                advance();
+        List<String> params = new ArrayList<>();
+        if (check(TokenKind.PARAM)) {
+            while (check(TokenKind.PARAM)) {
+                params.add(advance().text());
             }
-            if (check(TokenKind.RBRACKET)) {
-                throw error(peek(), "empty block: a block needs at least one statement");
+            Token bar = peek();
+            if (bar.kind() != TokenKind.BINOP || !bar.text().equals("|")) {
+                throw error(bar, "expected '|' after the block parameters, found " + bar.describe());
             }
-            List<Node> statements = new ArrayList<>();
-            while (true) {
-                statements.add(statement());
-                if (match(TokenKind.RBRACKET)) {
-                    break;
-                }
-                expect(TokenKind.DOT, "'.' or ']'");
-                if (match(TokenKind.RBRACKET)) {
-                    break;
-                }
-            }
-            return new Node.BlockLiteral(start.pos(), params, statements);
-        } finally {
-            depth--;
+            advance();
         }
+        if (check(TokenKind.RBRACKET)) {
+            throw error(peek(), "empty block: a block needs at least one statement");
+        }
+        List<Node> statements = new ArrayList<>();
+        while (true) {
+            statements.add(statement());
+            if (match(TokenKind.RBRACKET)) {
+                break;
+            }
+            expect(TokenKind.DOT, "'.' or ']'");
+            if (match(TokenKind.RBRACKET)) {
+                break;
+            }
+        }
+        return new Node.BlockLiteral(start.pos(), params, statements);
     }
 
     private static boolean startsOperand(Token t) {

@@ -23,6 +23,8 @@ final class Authoriser {
     private static final int MAX_PATHS = 16;
     private static final int MAX_PATH_LENGTH = 32;
     private static final int MAX_CACHED_PLANS = 100_000;
+    /** Variables every condition sees besides its parameters. */
+    private static final String[] PARTIES = {"p_subject", "p_target"};
 
     private final CellRuntime runtime;
     private final AuthMode mode;
@@ -130,7 +132,8 @@ final class Authoriser {
             for (Block condition : conditions) {
                 Object answer;
                 try {
-                    answer = runtime.interpreter().call(ex, condition, bind(condition, subject, target, values));
+                    answer = runtime.interpreter().call(ex, condition, bind(condition, subject, target, values),
+                            PARTIES, new Object[] {subject, target});
                 } catch (UnitAbort abort) {
                     throw abort;
                 } catch (PonderError e) {
@@ -178,7 +181,8 @@ final class Authoriser {
     }
 
     private Plan build(Object subject, ManagedObject target, String selector) {
-        List<List<ManagedObject>> targetPaths = paths(target);
+        // Root is in no domain, so, like any target in no domain, it is never checked.
+        List<List<ManagedObject>> targetPaths = target == runtime.root() ? List.of() : paths(target);
         if (targetPaths.isEmpty()) {
             return UNCHECKED;
         }

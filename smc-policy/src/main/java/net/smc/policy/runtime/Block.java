@@ -8,6 +8,7 @@ import net.smc.policy.lang.SourcePos;
  * (PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
  * its handler.
  */
+@Managed("Block")
 public final class Block {
     final Interpreter.BlockCode code;
     final Object[] captured;

@@ -118,9 +118,16 @@ public final class Interpreter {
 
     /** Calls a block: binds its parameters to {@code args} (extra arguments are ignored). */
     public Object call(Execution ex, Block block, Object... args) {
+        return call(ex, block, args, NO_NAMES, null);
+    }
+
+    private static final String[] NO_NAMES = new String[0];
+
+    /** Calls a block with extra variables bound in its call frame (as {@code p_subject} in conditions). */
+    Object call(Execution ex, Block block, Object[] args, String[] extraNames, Object[] extraValues) {
         if (block.guarded != null) {
             try {
-                return call(ex, block.guarded, args);
+                return call(ex, block.guarded, args, extraNames, extraValues);
             } catch (UnitAbort abort) {
                 throw abort;
             } catch (PonderError error) {
@@ -138,6 +145,9 @@ public final class Interpreter {
         ex.depth++;
         try {
             Frame frame = new Frame(ex, code.free, block.captured, code.params, args);
+            for (int i = 0; i < extraNames.length; i++) {
+                frame.set(extraNames[i], extraValues[i]);
+            }
             Object value = Nil.NIL;
             for (Code statement : code.body) {
                 value = statement.exec(frame);

@@ -127,6 +127,10 @@ public final class ObligationPolicy extends ManagedObject {
         if (!active) {
             return;
         }
+        if (ex.depth >= runtime.limits().maxCallDepth()) {
+            // Not contained here: the send that raised the event is where the loop shows.
+            throw new PonderError("call depth limit of " + runtime.limits().maxCallDepth() + " exceeded");
+        }
         Object previous = ex.source;
         ex.source = this;
         try {

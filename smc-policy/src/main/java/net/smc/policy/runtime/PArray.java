@@ -6,6 +6,7 @@ import java.util.Collection;
 import java.util.List;
 
 /** A PonderTalk array: growable, 0-based, holding any values. */
+@Managed("Array")
 public final class PArray {
     private final ArrayList<Object> items;
 

@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Set;
 
 /** A PonderTalk hash: string keys, any values, insertion order. */
+@Managed("Hash")
 public final class PHash {
     private final LinkedHashMap<String, Object> map = new LinkedHashMap<>();
 

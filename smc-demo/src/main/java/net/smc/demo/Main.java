@@ -1,0 +1,57 @@
+package net.smc.demo;
+
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.IVersionProvider;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}) and
+ * {@code shell} ({@link ShellCommand}). Only {@link #main} touches the process (its streams and
+ * its exit status); {@link #commandLine(Io)} builds the same command on any streams.
+ */
+@Command(name = "smc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
+        synopsisSubcommandLabel = "COMMAND",
+        description = "Runs PonderTalk policy scripts in a self-managed cell's policy engine.",
+        footer = {"%nRun 'smc COMMAND --help' for a command's options and exit statuses.",
+            "Exit status 2 means a usage error; the commands explain their other statuses."})
+public final class Main implements Callable<Integer> {
+    /** The version {@code --version} shows; keep it in step with the build's {@code version}. */
+    static final String VERSION = "0.1.0-SNAPSHOT";
+
+    @Spec
+    CommandSpec spec;
+
+    public static void main(String[] args) {
+        System.exit(commandLine(Io.system()).execute(args));
+    }
+
+    /** The {@code smc} command reading and writing {@code io}'s streams. */
+    static CommandLine commandLine(Io io) {
+        CommandLine commandLine = new CommandLine(new Main())
+                .addSubcommand(new RunCommand(io))
+                .addSubcommand(new ShellCommand(io));
+        // After the subcommands are added, so that these settings reach them too.
+        commandLine.setOut(io.stdout());
+        commandLine.setErr(io.stderr());
+        commandLine.setParameterExceptionHandler(new UsageErrors());
+        return commandLine;
+    }
+
+    /** {@code smc} without a command. */
+    @Override
+    public Integer call() {
+        throw new ParameterException(spec.commandLine(), "no command given: use run or shell");
+    }
+
+    /** The version line of {@code smc --version} and the subcommands' {@code --version}. */
+    static final class Version implements IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            return new String[] {"smc " + VERSION};
+        }
+    }
+}

@@ -1,0 +1,54 @@
+package net.smc.demo;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+import net.smc.policy.PolicyRepository;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code smc run FILE.p2 ...}: runs the files in order, as boot units of one fresh cell. */
+@Command(name = "run", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
+        description = {
+            "Runs PonderTalk files in order in one fresh cell, each file as one boot unit.",
+            "root print: lines go to standard output, one line per print and nothing else. "
+                    + "Errors go to standard error as FILE:LINE:COL: message. "
+                    + "A unit with an error stops there; the later files still run."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {
+            "0:every unit ran and no error was reported",
+            "1:an error was reported: a syntax or runtime error in a unit, or an error inside a policy "
+                    + "(which does not stop the unit, but counts)",
+            "2:usage error: unknown option, bad --auth value, no files, a file that cannot be read",
+            "n:a unit ran root exit: n (root exit is 0); the later files do not run"})
+final class RunCommand implements Callable<Integer> {
+    private final Io io;
+
+    @Spec
+    CommandSpec spec;
+
+    @Mixin
+    CellOptions options;
+
+    @Parameters(arity = "1..*", paramLabel = "FILE.p2", description = "The files to run, in order.")
+    List<Path> files;
+
+    RunCommand(Io io) {
+        this.io = io;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        List<Path> units = CellOptions.readableFiles(spec, io.workingDir(), files);
+        PolicyRepository repository = options.repository(spec, io.workingDir());
+        return LargeStack.call(() -> {
+            CommandCell cell = new CommandCell(io, options.auth, repository);
+            cell.boot(units);
+            cell.cell().endBoot();
+            return cell.exitStatus().orElse(cell.clean() ? 0 : 1);
+        });
+    }
+}

@@ -1,0 +1,81 @@
+package net.smc.demo;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import net.smc.policy.Cell;
+import net.smc.policy.PolicyRepository;
+import net.smc.policy.RunResult;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code smc shell [FILE.p2 ...]}: boots the files, then runs statements read from stdin. */
+@Command(name = "shell", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
+        description = {
+            "Runs the files as boot units of one fresh cell (as run does), ends the boot phase, then "
+                    + "reads PonderTalk from standard input and runs each input as one unit.",
+            "An input ends at a line whose last non-blank character is '.' (even when that '.' is "
+                    + "inside a string or a comment); text left at the end of input without one is run too. "
+                    + "Variables persist from one input to the next. After an input that ran without error "
+                    + "the printed form of its last statement's value goes to standard output; "
+                    + "errors go to standard error and the shell goes on.",
+            "In errors an input is named stdin, its lines counted from 1 within that input.",
+            "On a terminal the shell prompts with 'smc> ' (and '...> ' for an input's further lines)."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {
+            "0:the end of input was reached (errors in the files or the inputs do not change this)",
+            "2:usage error: unknown option, bad --auth value, a file that cannot be read",
+            "n:a file or an input ran root exit: n (root exit is 0); nothing more runs"})
+final class ShellCommand implements Callable<Integer> {
+    /** The source name of shell inputs in diagnostics. */
+    static final String SOURCE = "stdin";
+
+    private final Io io;
+
+    @Spec
+    CommandSpec spec;
+
+    @Mixin
+    CellOptions options;
+
+    @Parameters(arity = "0..*", paramLabel = "FILE.p2", description = "Files to run first, in order, as boot units.")
+    List<Path> files = new ArrayList<>();
+
+    ShellCommand(Io io) {
+        this.io = io;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        List<Path> units = CellOptions.readableFiles(spec, io.workingDir(), files);
+        PolicyRepository repository = options.repository(spec, io.workingDir());
+        return LargeStack.call(() -> {
+            CommandCell cell = new CommandCell(io, options.auth, repository);
+            cell.boot(units);
+            cell.cell().endBoot();
+            if (cell.exitStatus().isEmpty()) {
+                readInputs(cell);
+            }
+            return cell.exitStatus().orElse(0);
+        });
+    }
+
+    private void readInputs(CommandCell cell) throws IOException {
+        Cell.Session session = cell.cell().session();
+        ShellInput input = new ShellInput(io);
+        for (String text = input.next(); text != null; text = input.next()) {
+            RunResult result = session.run(SOURCE, text);
+            if (result.ok()) {
+                io.stdout().println(Cell.print(result.value()));
+            }
+            if (cell.exitStatus().isPresent()) {
+                return;
+            }
+        }
+    }
+}
