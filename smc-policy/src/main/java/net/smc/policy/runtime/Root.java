@@ -55,6 +55,9 @@ public final class Root extends Domain {
 
     @Op("exit:")
     public Object exit(int status) {
+        if (status < 0 || status > 255) {
+            throw new PonderError("exit status must be between 0 and 255, got " + status);
+        }
         throw new ExitRequest(status);
     }
 
