@@ -44,9 +44,6 @@ public final class AuthorisationPolicy extends ManagedObject {
             }
             default -> throw new PonderError("focus must be \"s\", \"t\" or \"st\", got '" + Numbers.abbreviate(focus) + "'");
         }
-        if (runtime.authoriser() != null) {
-            runtime.authoriser().add(this);
-        }
     }
 
     @Op("subject:action:target:focus:")
@@ -94,8 +91,12 @@ public final class AuthorisationPolicy extends ManagedObject {
 
     @Op("active:")
     public boolean active(boolean on) {
-        active = on;
-        changed();
+        if (on != active) {
+            active = on;
+            if (runtime.authoriser() != null) {
+                runtime.authoriser().activeChanged(this);
+            }
+        }
         return on;
     }
 

@@ -28,9 +28,9 @@ final class Authoriser {
 
     private final CellRuntime runtime;
     private final AuthMode mode;
-    private final List<AuthorisationPolicy> policies = new ArrayList<>();
     private final HashMap<Key, Plan> plans = new HashMap<>();
-    private Map<ManagedObject, List<AuthorisationPolicy>> activeBySubject;
+    /** Active policies by subject, each list in activation order. */
+    private final Map<ManagedObject, List<AuthorisationPolicy>> activeBySubject = new HashMap<>();
 
     private record Key(Object subject, ManagedObject target, String selector) {
     }
@@ -50,13 +50,24 @@ final class Authoriser {
         this.mode = mode;
     }
 
-    void add(AuthorisationPolicy policy) {
-        policies.add(policy);
-        policiesChanged();
+    /** A policy was activated or deactivated. */
+    void activeChanged(AuthorisationPolicy policy) {
+        if (policy.active) {
+            activeBySubject.computeIfAbsent(policy.subject, s -> new ArrayList<>()).add(policy);
+        } else {
+            List<AuthorisationPolicy> ofSubject = activeBySubject.get(policy.subject);
+            if (ofSubject != null) {
+                ofSubject.remove(policy);
+                if (ofSubject.isEmpty()) {
+                    activeBySubject.remove(policy.subject);
+                }
+            }
+        }
+        plans.clear();
     }
 
+    /** A policy's modifiers or conditions changed. */
     void policiesChanged() {
-        activeBySubject = null;
         plans.clear();
     }
 
@@ -190,7 +201,7 @@ final class Authoriser {
         if (subjectPaths.isEmpty() && subject instanceof ManagedObject s) {
             subjectPaths = List.of(List.of(s));
         }
-        Map<ManagedObject, List<AuthorisationPolicy>> bySubject = activeBySubject();
+        Map<ManagedObject, List<AuthorisationPolicy>> bySubject = activeBySubject;
         Combination[][] points = new Combination[4][];
         for (int point = 0; point < 4; point++) {
             boolean subjectSide = point == REQUEST_SUBJECT || point == REPLY_SUBJECT;
@@ -246,19 +257,6 @@ final class Authoriser {
             return null;
         }
         return new Combination(finals.toArray(new AuthorisationPolicy[0]), normals.toArray(new AuthorisationPolicy[0]));
-    }
-
-    private Map<ManagedObject, List<AuthorisationPolicy>> activeBySubject() {
-        if (activeBySubject == null) {
-            Map<ManagedObject, List<AuthorisationPolicy>> index = new HashMap<>();
-            for (AuthorisationPolicy p : policies) {
-                if (p.active) {
-                    index.computeIfAbsent(p.subject, k -> new ArrayList<>()).add(p);
-                }
-            }
-            activeBySubject = index;
-        }
-        return activeBySubject;
     }
 
     /** Every path from root down to {@code object} (at most {@link #MAX_PATHS}); empty if it is in no domain tree. */
