@@ -250,6 +250,9 @@ public final class Cell {
         } catch (PonderError e) {
             runtime.report(new Diagnostic(e.pos(), "raise: " + e.getMessage()));
             return false;
+        } catch (StackOverflowError e) {
+            runtime.report(new Diagnostic(null, "raise: stack exhausted; lower the nesting or the call depth limit"));
+            return false;
         } catch (ExitRequest exit) {
             exitStatus = exit.status();
             return false;

@@ -11,6 +11,8 @@ import java.util.List;
  */
 public final class Lexer {
     private static final String BINOP_CHARS = "!%&*+/-<=>?@\\~,";
+    /** Longest number literal accepted: parsing is superlinear in the digits. */
+    static final int MAX_NUMBER_LENGTH = 1000;
 
     private final String source;
     private final String text;
@@ -195,6 +197,9 @@ public final class Lexer {
             while (isHexDigit(peek(0))) {
                 index++;
             }
+            if (tooLong(start, at)) {
+                return;
+            }
             addNumber(start, at, negate(new BigDecimal(new BigInteger(text.substring(hexStart, index), 16)), negative));
             return;
         }
@@ -208,7 +213,7 @@ public final class Lexer {
             while (isRadixDigit(peek(0))) {
                 index++;
             }
-            if (radix < 0) {
+            if (radix < 0 || tooLong(start, at)) {
                 return;
             }
             String digits = text.substring(valueStart, index);
@@ -230,6 +235,9 @@ public final class Lexer {
             while (isDigit(peek(0))) {
                 index++;
             }
+        }
+        if (tooLong(start, at)) {
+            return;
         }
         String written = text.substring(start, index);
         try {
@@ -254,6 +262,16 @@ public final class Lexer {
 
     private static BigDecimal negate(BigDecimal value, boolean negative) {
         return negative ? value.negate() : value;
+    }
+
+    /** Whether the number from {@code start} to here is too long; reports it if so. */
+    private boolean tooLong(int start, SourcePos at) {
+        if (index - start > MAX_NUMBER_LENGTH) {
+            errors.add(new SyntaxError(at, "number literal of " + (index - start) + " characters is longer than "
+                    + MAX_NUMBER_LENGTH));
+            return true;
+        }
+        return false;
     }
 
     private void addNumber(int start, SourcePos at, BigDecimal value) {

@@ -17,6 +17,8 @@ public final class Parser {
     public static final int MAX_INCLUDE_DEPTH = 16;
     /** Errors reported before the parser gives up on a unit. */
     public static final int MAX_ERRORS = 100;
+    /** Longest chain of sends one expression may build (each send's receiver is the previous send). */
+    public static final int MAX_EXPRESSION_DEPTH = 2000;
 
     private final List<Token> tokens;
     private final List<SyntaxError> errors;
@@ -24,6 +26,10 @@ public final class Parser {
     private final int includeDepth;
     private int current;
     private int depth;
+    /** Brackets opened and not yet closed by the tokens consumed so far. */
+    private int open;
+    /** How deep each send built so far is (sends are built left to right, so receivers come first). */
+    private final java.util.IdentityHashMap<Node, Integer> sendDepths = new java.util.IdentityHashMap<>();
 
     private Parser(List<Token> tokens, List<SyntaxError> errors, IncludeResolver includes, int includeDepth) {
         this.tokens = tokens;
@@ -117,21 +123,12 @@ public final class Parser {
         statements.addAll(parseInto(included.source(), included.text(), includes, includeDepth + 1, errors));
     }
 
-    /** Skips to just after the next '.' outside brackets, or to the end. */
+    /** Skips to just after the next '.' that ends a top-level statement, or to the end. */
     private void synchronize() {
-        int nesting = 0;
         while (!check(TokenKind.EOF)) {
             Token t = advance();
-            switch (t.kind()) {
-                case LPAREN, LBRACKET, ARRAY_START -> nesting++;
-                case RPAREN, RBRACKET -> nesting = Math.max(0, nesting - 1);
-                case DOT -> {
-                    if (nesting == 0) {
-                        return;
-                    }
-                }
-                default -> {
-                }
+            if (t.kind() == TokenKind.DOT && open == 0) {
+                return;
             }
         }
     }
@@ -178,12 +175,27 @@ public final class Parser {
         return new Node.Cascade(chain.get(0).pos(), cascadeReceiver, chains);
     }
 
-    private static Node fold(Node receiver, List<Node.Message> chain) {
+    private Node fold(Node receiver, List<Node.Message> chain) {
         Node result = receiver;
         for (Node.Message m : chain) {
-            result = new Node.Send(result, m);
+            result = send(result, m);
         }
         return result;
+    }
+
+    /** Builds a send, refusing chains deeper than {@link #MAX_EXPRESSION_DEPTH}. */
+    private Node send(Node receiver, Node.Message message) {
+        int deepest = sendDepths.getOrDefault(receiver, 0);
+        for (Node arg : message.args()) {
+            deepest = Math.max(deepest, sendDepths.getOrDefault(arg, 0));
+        }
+        if (deepest + 1 > MAX_EXPRESSION_DEPTH) {
+            errors.add(new SyntaxError(message.pos(), "expression deeper than " + MAX_EXPRESSION_DEPTH + " sends"));
+            throw new Abandon(true);
+        }
+        Node.Send send = new Node.Send(receiver, message);
+        sendDepths.put(send, deepest + 1);
+        return send;
     }
 
     /** {@code unary* binaries? keywords?}, possibly empty. */
@@ -204,7 +216,7 @@ public final class Parser {
                 selector.append(advance().text());
                 Node arg = unaryOperand();
                 while (check(TokenKind.BINOP)) {
-                    arg = new Node.Send(arg, binary());
+                    arg = send(arg, binary());
                 }
                 args.add(arg);
             }
@@ -222,7 +234,7 @@ public final class Parser {
         Node result = operand();
         while (check(TokenKind.IDENT)) {
             Token selector = advance();
-            result = new Node.Send(result, new Node.Message(selector.pos(), selector.text(), List.of()));
+            result = send(result, new Node.Message(selector.pos(), selector.text(), List.of()));
         }
         return result;
     }
@@ -342,9 +354,16 @@ public final class Parser {
 
     private Token advance() {
         Token t = tokens.get(current);
-        if (t.kind() != TokenKind.EOF) {
-            current++;
+        switch (t.kind()) {
+            case EOF -> {
+                return t;
+            }
+            case LPAREN, LBRACKET, ARRAY_START -> open++;
+            case RPAREN, RBRACKET -> open = Math.max(0, open - 1);
+            default -> {
+            }
         }
+        current++;
         return t;
     }
 

@@ -20,8 +20,9 @@ final class Authoriser {
     private static final int REQUEST_TARGET = 1;
     private static final int REPLY_TARGET = 2;
     private static final int REPLY_SUBJECT = 3;
-    private static final int MAX_PATHS = 16;
-    private static final int MAX_PATH_LENGTH = 32;
+    /** Paths followed from root to one object; beyond this (or {@link #MAX_PATH_LENGTH}) the send is denied. */
+    private static final int MAX_PATHS = 64;
+    private static final int MAX_PATH_LENGTH = 256;
     private static final int MAX_CACHED_PLANS = 100_000;
     /** Variables every condition sees besides its parameters. */
     private static final String[] PARTIES = {"p_subject", "p_target"};
@@ -39,11 +40,20 @@ final class Authoriser {
     private record Combination(AuthorisationPolicy[] finals, AuthorisationPolicy[] normals) {
     }
 
-    /** Candidates per enforcement point; {@code null} marks a target in no domain (never checked). */
+    /** Candidates per enforcement point. */
     private record Plan(Combination[][] points) {
     }
 
+    /** A target in no domain: never checked. */
     private static final Plan UNCHECKED = new Plan(null);
+    /** More paths than can be followed: denied, since a path not followed might deny. */
+    private static final Plan TOO_MANY_PATHS = new Plan(null);
+
+    /** The paths from root down to one object, and whether some were left out. */
+    private static final class Paths {
+        final List<List<ManagedObject>> list = new ArrayList<>();
+        boolean overflow;
+    }
 
     Authoriser(CellRuntime runtime, AuthMode mode) {
         this.runtime = runtime;
@@ -82,6 +92,10 @@ final class Authoriser {
         Plan plan = plan(subject, receiver, op.selector);
         if (plan == UNCHECKED) {
             return interpreter.invokeUnchecked(ex, op, receiver, target, args, pos);
+        }
+        if (plan == TOO_MANY_PATHS) {
+            throw new PonderError("Ponder2AuthorizationException: " + op.selector + " (the subject or target lies on more than "
+                    + MAX_PATHS + " domain paths, or on one deeper than " + MAX_PATH_LENGTH + "; denied)");
         }
         check(ex, plan, REQUEST_SUBJECT, subject, receiver, op.selector, args);
         check(ex, plan, REQUEST_TARGET, subject, receiver, op.selector, args);
@@ -193,13 +207,21 @@ final class Authoriser {
 
     private Plan build(Object subject, ManagedObject target, String selector) {
         // Root is in no domain, so, like any target in no domain, it is never checked.
-        List<List<ManagedObject>> targetPaths = target == runtime.root() ? List.of() : paths(target);
-        if (targetPaths.isEmpty()) {
+        Paths targets = target == runtime.root() ? new Paths() : paths(target);
+        if (targets.overflow) {
+            return TOO_MANY_PATHS;
+        }
+        if (targets.list.isEmpty()) {
             return UNCHECKED;
         }
-        List<List<ManagedObject>> subjectPaths = subject instanceof ManagedObject s ? paths(s) : List.of();
-        if (subjectPaths.isEmpty() && subject instanceof ManagedObject s) {
-            subjectPaths = List.of(List.of(s));
+        List<List<ManagedObject>> targetPaths = targets.list;
+        List<List<ManagedObject>> subjectPaths = List.of();
+        if (subject instanceof ManagedObject s) {
+            Paths subjects = paths(s);
+            if (subjects.overflow) {
+                return TOO_MANY_PATHS;
+            }
+            subjectPaths = subjects.list.isEmpty() ? List.of(List.of(s)) : subjects.list;
         }
         Map<ManagedObject, List<AuthorisationPolicy>> bySubject = activeBySubject;
         Combination[][] points = new Combination[4][];
@@ -259,22 +281,26 @@ final class Authoriser {
         return new Combination(finals.toArray(new AuthorisationPolicy[0]), normals.toArray(new AuthorisationPolicy[0]));
     }
 
-    /** Every path from root down to {@code object} (at most {@link #MAX_PATHS}); empty if it is in no domain tree. */
-    private List<List<ManagedObject>> paths(ManagedObject object) {
-        List<List<ManagedObject>> out = new ArrayList<>();
+    /** Every path from root down to {@code object}; none if it is in no domain tree. */
+    private Paths paths(ManagedObject object) {
+        Paths out = new Paths();
         collect(object, new ArrayList<>(), out);
         return out;
     }
 
-    private void collect(ManagedObject at, List<ManagedObject> below, List<List<ManagedObject>> out) {
-        if (out.size() >= MAX_PATHS || below.size() >= MAX_PATH_LENGTH || below.contains(at)) {
+    private void collect(ManagedObject at, List<ManagedObject> below, Paths out) {
+        if (below.contains(at)) {
+            return;
+        }
+        if (out.list.size() >= MAX_PATHS || below.size() >= MAX_PATH_LENGTH) {
+            out.overflow = true;
             return;
         }
         below.add(at);
         if (at == runtime.root()) {
             List<ManagedObject> path = new ArrayList<>(below);
             java.util.Collections.reverse(path);
-            out.add(path);
+            out.list.add(path);
         } else {
             for (Domain parent : at.parents()) {
                 collect(parent, below, out);

@@ -186,9 +186,8 @@ public final class CellRuntime {
     public Object run(Unit unit, Variables variables) {
         Execution ex = newExecution();
         Frame frame = new Frame(ex, variables == null ? Map.of() : variables.values);
-        Interpreter.Compiled code = interpreter.compile(unit.statements());
         try {
-            return interpreter.run(code, frame);
+            return interpreter.run(interpreter.compile(unit.statements()), frame);
         } catch (PonderError e) {
             report(new Diagnostic(e.pos(), e.getMessage()));
             return null;
@@ -248,6 +247,14 @@ public final class CellRuntime {
     }
 
     private Optional<Path> locate(String name, String fromSource) {
+        try {
+            return locateFile(name, fromSource);
+        } catch (java.nio.file.InvalidPathException e) {
+            return Optional.empty();
+        }
+    }
+
+    private Optional<Path> locateFile(String name, String fromSource) {
         Path from = files.get(fromSource);
         if (from != null) {
             Path sibling = from.resolveSibling(name).normalize();

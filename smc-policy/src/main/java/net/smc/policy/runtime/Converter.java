@@ -111,7 +111,11 @@ interface Converter {
             return BigDecimal.valueOf(((Number) result).longValue());
         }
         if (result instanceof Double || result instanceof Float) {
-            return BigDecimal.valueOf(((Number) result).doubleValue());
+            double d = ((Number) result).doubleValue();
+            if (Double.isNaN(d) || Double.isInfinite(d)) {
+                throw new PonderError("the answer " + d + " is not a number PonderTalk can hold");
+            }
+            return BigDecimal.valueOf(d);
         }
         if (result instanceof java.math.BigInteger b) {
             return new BigDecimal(b);

@@ -135,6 +135,9 @@ public final class Interpreter {
             }
         }
         BlockCode code = block.code;
+        if (--ex.stepsLeft < 0) {
+            throw ex.stepLimitExceeded();
+        }
         if (args.length < code.params.length) {
             throw new PonderError("Not enough arguments for block. " + args.length + " given, "
                     + code.params.length + " expected.");

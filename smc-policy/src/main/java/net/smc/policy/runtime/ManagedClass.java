@@ -113,6 +113,8 @@ public final class ManagedClass {
             }
         }
         for (Class<?> k = type; k != null && k != Object.class; k = k.getSuperclass()) {
+            // A subclass's operation overrides its superclass's; two in one class are an error.
+            Set<String> inherited = k == type ? Set.of() : Set.copyOf(ops.keySet());
             for (Method m : k.getDeclaredMethods()) {
                 Op op = m.getAnnotation(Op.class);
                 if (op == null || m.isBridge()) {
@@ -123,7 +125,7 @@ public final class ManagedClass {
                     case INSTANCE -> !isStatic;
                     case STATIC_RECEIVER, FACTORY -> isStatic;
                 };
-                if (wanted && !ops.containsKey(op.value())) {
+                if (wanted && !inherited.contains(op.value())) {
                     put(ops, op.value(), Operation.of(op.value(), m, kind, owner), type);
                 }
             }

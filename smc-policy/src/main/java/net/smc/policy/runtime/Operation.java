@@ -156,7 +156,11 @@ final class Operation {
         if (returnsVoid) {
             return answerForVoid;
         }
-        return Converter.fromJava(result);
+        try {
+            return Converter.fromJava(result);
+        } catch (PonderError e) {
+            throw new PonderError("'" + selector + "' of " + owner + " failed: " + e.getMessage());
+        }
     }
 
     /** Whether the operation wants the call's context (and so a {@link CallContext} must be made). */
