@@ -68,6 +68,27 @@ final class CellOptions {
     }
 
     /** {@code allow} or {@code deny}, exactly. */
+    /** What a command does with its cell once the boot files have run. */
+    @FunctionalInterface
+    interface BootedWork {
+        int run(CommandCell cell) throws Exception;
+    }
+
+    /**
+     * Checks the files and the repository (usage errors), then, on a large stack, boots the files
+     * in one fresh cell, ends the boot phase and runs {@code work}; answers its exit status.
+     */
+    int withBootedCell(CommandSpec spec, Io io, List<Path> files, BootedWork work) throws Exception {
+        List<Path> units = readableFiles(spec, io.workingDir(), files);
+        PolicyRepository repo = repository(spec, io.workingDir());
+        return LargeStack.call(() -> {
+            CommandCell cell = new CommandCell(io, auth, repo);
+            cell.boot(units);
+            cell.cell().endBoot();
+            return work.run(cell);
+        });
+    }
+
     static final class AuthConverter implements ITypeConverter<AuthMode> {
         @Override
         public AuthMode convert(String value) {

@@ -3,7 +3,6 @@ package net.smc.demo;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
-import net.smc.policy.PolicyRepository;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -42,13 +41,6 @@ final class RunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        List<Path> units = CellOptions.readableFiles(spec, io.workingDir(), files);
-        PolicyRepository repository = options.repository(spec, io.workingDir());
-        return LargeStack.call(() -> {
-            CommandCell cell = new CommandCell(io, options.auth, repository);
-            cell.boot(units);
-            cell.cell().endBoot();
-            return cell.exitStatus().orElse(cell.clean() ? 0 : 1);
-        });
+        return options.withBootedCell(spec, io, files, cell -> cell.exitStatus().orElse(cell.clean() ? 0 : 1));
     }
 }

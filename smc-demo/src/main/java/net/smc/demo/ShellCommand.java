@@ -6,7 +6,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import net.smc.policy.Cell;
-import net.smc.policy.PolicyRepository;
 import net.smc.policy.RunResult;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -52,12 +51,7 @@ final class ShellCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        List<Path> units = CellOptions.readableFiles(spec, io.workingDir(), files);
-        PolicyRepository repository = options.repository(spec, io.workingDir());
-        return LargeStack.call(() -> {
-            CommandCell cell = new CommandCell(io, options.auth, repository);
-            cell.boot(units);
-            cell.cell().endBoot();
+        return options.withBootedCell(spec, io, files, cell -> {
             if (cell.exitStatus().isEmpty()) {
                 readInputs(cell);
             }
