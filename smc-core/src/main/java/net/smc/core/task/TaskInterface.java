@@ -1,0 +1,18 @@
+package net.smc.core.task;
+
+import java.lang.annotation.ElementType;
+import java.lang.annotation.Retention;
+import java.lang.annotation.RetentionPolicy;
+import java.lang.annotation.Target;
+
+/**
+ * Marks an interface as a task interface and names its task: {@code @TaskInterface("Explorer")}
+ * on {@code ExplorerI}, implemented by the task {@code Explorer} (the paper's naming scheme). Its
+ * methods are the task's operations, or its events where marked {@link TaskEvent}.
+ */
+@Retention(RetentionPolicy.RUNTIME)
+@Target(ElementType.TYPE)
+public @interface TaskInterface {
+    /** The name of the task that implements the interface. */
+    String value();
+}
