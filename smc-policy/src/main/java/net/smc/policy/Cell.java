@@ -3,7 +3,9 @@ package net.smc.policy;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.OptionalInt;
@@ -126,8 +128,9 @@ public final class Cell {
         try {
             text = Files.readString(file);
         } catch (IOException | java.io.UncheckedIOException e) {
-            runtime.report(new Diagnostic(null, file + ": cannot read: " + e.getMessage()));
-            return new RunResult(RunResult.Status.RUNTIME_ERROR, null);
+            Diagnostic cannotRead = new Diagnostic(null, file + ": cannot read: " + e.getMessage());
+            runtime.report(cannotRead);
+            return new RunResult(RunResult.Status.RUNTIME_ERROR, null, List.of(cannotRead));
         }
         return run(file.toString(), text, file, null);
     }
@@ -147,18 +150,48 @@ public final class Cell {
 
     private RunResult run(String sourceName, String text, Path file, CellRuntime.Variables variables) {
         if (exitStatus != null) {
-            return new RunResult(RunResult.Status.EXITED, null);
+            return new RunResult(RunResult.Status.EXITED, null, List.of());
         }
-        Unit unit = runtime.parse(sourceName, text, file);
-        if (unit.hasErrors()) {
-            return new RunResult(RunResult.Status.SYNTAX_ERROR, null);
-        }
+        List<Diagnostic> seen = new ArrayList<>();
+        Consumer<Diagnostic> listener = seen::add;
+        runtime.listen(listener);
         try {
+            Unit unit = runtime.parse(sourceName, text, file);
+            if (unit.hasErrors()) {
+                return new RunResult(RunResult.Status.SYNTAX_ERROR, null, seen);
+            }
             Object value = runtime.run(unit, variables);
-            return value == null ? new RunResult(RunResult.Status.RUNTIME_ERROR, null) : new RunResult(RunResult.Status.OK, value);
+            return value == null ? new RunResult(RunResult.Status.RUNTIME_ERROR, null, seen)
+                    : new RunResult(RunResult.Status.OK, value, seen);
         } catch (ExitRequest exit) {
             exitStatus = exit.status();
-            return new RunResult(RunResult.Status.EXITED, null);
+            return new RunResult(RunResult.Status.EXITED, null, seen);
+        } finally {
+            runtime.unlisten(listener);
+        }
+    }
+
+    /**
+     * Sends a message from Java on behalf of {@code subject} (a managed object standing for, say,
+     * a collaborating role): with authorisation on, the send is checked from that subject to the
+     * receiver at all four enforcement points, as if a policy of the subject had sent it.
+     *
+     * @throws PonderError when the receiver does not understand the selector, the send is denied
+     *                     ({@code Ponder2AuthorizationException: selector}), or the operation fails
+     */
+    public Object sendAs(Object subject, Object receiver, String selector, Object... args) {
+        if (exitStatus != null) {
+            throw new PonderError("the cell has exited");
+        }
+        Object[] converted = new Object[args.length];
+        for (int i = 0; i < args.length; i++) {
+            converted[i] = CellRuntime.fromJava(args[i]);
+        }
+        try {
+            return runtime.sendAs(subject, receiver, selector, converted);
+        } catch (ExitRequest exit) {
+            exitStatus = exit.status();
+            throw new PonderError("the cell has exited");
         }
     }
 

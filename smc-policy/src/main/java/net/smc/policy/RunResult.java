@@ -1,12 +1,21 @@
 package net.smc.policy;
 
+import java.util.List;
+
 /**
- * How a unit ended, and the value of its last statement when it ran to the end.
+ * How a unit ended, the value of its last statement when it ran to the end, and the diagnostics
+ * reported while it ran (its own errors and those of the policies it triggered; they also went to
+ * the cell's error reporter).
  *
- * @param status what happened
- * @param value  the last statement's value ({@code null} unless {@link Status#OK})
+ * @param status      what happened
+ * @param value       the last statement's value ({@code null} unless {@link Status#OK})
+ * @param diagnostics what was reported while the unit ran, in order
  */
-public record RunResult(Status status, Object value) {
+public record RunResult(Status status, Object value, List<Diagnostic> diagnostics) {
+
+    public RunResult {
+        diagnostics = List.copyOf(diagnostics);
+    }
 
     public enum Status {
         /** Every statement ran. */

@@ -43,6 +43,7 @@ public final class CellRuntime {
     private final Map<String, ManagedObject> factories = new HashMap<>();
     private final Map<String, Path> files = new HashMap<>();
     private final Authoriser authoriser;
+    private final List<Consumer<Diagnostic>> listeners = new ArrayList<>();
     private boolean booting = true;
     private long attachCounter;
 
@@ -139,9 +140,32 @@ public final class CellRuntime {
         config.output().accept(line);
     }
 
-    /** Reports an error to the cell's error reporter. */
+    /** Reports an error to the cell's error reporter (and to every listener added with {@link #listen}). */
     public void report(Diagnostic diagnostic) {
+        for (Consumer<Diagnostic> listener : List.copyOf(listeners)) {
+            listener.accept(diagnostic);
+        }
         config.errors().accept(diagnostic);
+    }
+
+    /** Also gives every diagnostic to {@code listener} until {@link #unlisten} removes it. */
+    public void listen(Consumer<Diagnostic> listener) {
+        listeners.add(listener);
+    }
+
+    public void unlisten(Consumer<Diagnostic> listener) {
+        listeners.remove(listener);
+    }
+
+    /**
+     * Sends a message from Java as {@code subject} would: when authorisation is on, the send is
+     * checked from subject to receiver (unless the subject is root).
+     *
+     * @throws PonderError when the receiver does not understand, the send is denied, or it fails
+     */
+    public Object sendAs(Object subject, Object receiver, String selector, Object[] args) {
+        Execution ex = new Execution(this, subject);
+        return interpreter.send(ex, receiver, selector, args, null);
     }
 
     /** A new run whose statements have root as their source. */
