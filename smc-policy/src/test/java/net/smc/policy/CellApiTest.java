@@ -77,4 +77,33 @@ class CellApiTest {
         PonderError e = assertThrows(PonderError.class, () -> cell.sendAs(cell.root(), cell.root(), "frob"));
         assertEquals("unknown operation 'frob' on SelfManagedCell", e.getMessage());
     }
+
+    @Test
+    void creationListener_hearsOfEveryPolicyHoweverMade() {
+        Cell cell = cell(AuthMode.ALLOW);
+        List<Object> created = new ArrayList<>();
+        java.util.function.Consumer<net.smc.policy.runtime.ManagedObject> listener = created::add;
+        cell.runtime().listenCreations(listener);
+        cell.run("make.p2", """
+                a := root/factory/ecapolicy create.
+                b := (root load: "ObligationPolicy") create.
+                c := root/factory/authpolicy subject: root action: "*" target: root focus: "t".
+                root at: "a" put: a. root at: "b" put: b. root at: "c" put: c.
+                """);
+        cell.runtime().unlistenCreations(listener);
+        cell.run("after.p2", "root at: \"d\" put: root/factory/ecapolicy create.");
+        assertEquals(List.of(cell.resolve("root/a"), cell.resolve("root/b"), cell.resolve("root/c")), created);
+    }
+
+    @Test
+    void attachments_listTheNodesAPolicyIsAttachedTo() {
+        Cell cell = cell(AuthMode.OFF);
+        cell.run("make.p2", """
+                root at: "d" put: root/factory/domain create.
+                p := root/factory/ecapolicy create. root at: "p" put: p.
+                p attach: root/d; active: true.
+                """);
+        var p = (net.smc.policy.runtime.ObligationPolicy) cell.resolve("root/p");
+        assertEquals(List.of(cell.resolve("root/d")), p.attachments());
+    }
 }

@@ -28,6 +28,16 @@ public record CapabilityDescription(String vehicle, SortedSet<String> resources,
         return java.util.Collections.unmodifiableSortedSet(names);
     }
 
+    /** Whether the vehicle has every resource and task the requirement names. */
+    public boolean satisfies(CapabilityRequirement requirement) {
+        return requirement.isMetBy(this);
+    }
+
+    /** The description of the named task, if the vehicle has it. */
+    public java.util.Optional<TaskDescription> task(String name) {
+        return tasks.stream().filter(t -> t.task().equals(name)).findFirst();
+    }
+
     /** The compact form a discovery reply carries. */
     public CapabilitySummary summary() {
         return new CapabilitySummary(vehicle, resources, taskNames());

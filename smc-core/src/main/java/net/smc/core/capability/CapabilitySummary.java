@@ -13,6 +13,11 @@ public record CapabilitySummary(String vehicle, SortedSet<String> resources, Sor
         tasks = java.util.Collections.unmodifiableSortedSet(new TreeSet<>(tasks));
     }
 
+    /** Whether the vehicle has every resource and task the requirement names. */
+    public boolean satisfies(CapabilityRequirement requirement) {
+        return requirement.isMetBy(this);
+    }
+
     /** Whether this summary is exactly the summary of {@code full}. */
     public boolean matches(CapabilityDescription full) {
         return equals(full.summary());

@@ -44,6 +44,7 @@ public final class AuthorisationPolicy extends ManagedObject {
             }
             default -> throw new PonderError("focus must be \"s\", \"t\" or \"st\", got '" + Numbers.abbreviate(focus) + "'");
         }
+        runtime.created(this);
     }
 
     @Op("subject:action:target:focus:")

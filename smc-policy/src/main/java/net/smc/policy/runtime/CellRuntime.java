@@ -44,6 +44,7 @@ public final class CellRuntime {
     private final Map<String, Path> files = new HashMap<>();
     private final Authoriser authoriser;
     private final List<Consumer<Diagnostic>> listeners = new ArrayList<>();
+    private final List<Consumer<ManagedObject>> creationListeners = new ArrayList<>();
     private boolean booting = true;
     private long attachCounter;
 
@@ -155,6 +156,24 @@ public final class CellRuntime {
 
     public void unlisten(Consumer<Diagnostic> listener) {
         listeners.remove(listener);
+    }
+
+    /**
+     * Tells {@code listener} of every obligation and authorisation policy created from now on,
+     * however it was created (a factory, {@code root load:}, Java), until {@link #unlistenCreations}.
+     */
+    public void listenCreations(Consumer<ManagedObject> listener) {
+        creationListeners.add(listener);
+    }
+
+    public void unlistenCreations(Consumer<ManagedObject> listener) {
+        creationListeners.remove(listener);
+    }
+
+    void created(ManagedObject policy) {
+        for (Consumer<ManagedObject> listener : List.copyOf(creationListeners)) {
+            listener.accept(policy);
+        }
     }
 
     /**

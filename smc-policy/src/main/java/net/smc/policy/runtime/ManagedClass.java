@@ -4,15 +4,19 @@ import java.lang.reflect.Constructor;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.math.BigDecimal;
+import java.util.ArrayDeque;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeSet;
 import java.util.Set;
 
 /**
  * The dispatch table of one kind of PonderTalk object, built once per Java class from its
- * {@link Op} annotations: selector to {@link Operation}. Every table also answers {@code class},
+ * {@link Op} annotations (on the class, its superclasses and, for instance operations, the
+ * interfaces it implements): selector to {@link Operation}. Every table also answers {@code class},
  * {@code self}, {@code ==} and {@code !=}, except nil's, which answers nothing.
  */
 public final class ManagedClass {
@@ -133,7 +137,58 @@ public final class ManagedClass {
                 break;
             }
         }
+        if (kind == Operation.Kind.INSTANCE) {
+            interfaceOperations(type, ops, owner);
+        }
         return ops;
+    }
+
+    /**
+     * Adds the {@link Op}s declared on the interfaces the class implements (its own, its
+     * superclasses', and theirs), so that an interface can define a managed object's operations
+     * (the core's task interfaces do). A selector the class chain defines wins over every
+     * interface's; between interfaces, one that extends another wins over it; the same selector from
+     * two unrelated interfaces is an error, since neither is more specific.
+     */
+    private static void interfaceOperations(Class<?> type, Map<String, Operation> ops, String owner) {
+        Set<String> fromClasses = Set.copyOf(ops.keySet());
+        Map<String, Class<?>> declaredBy = new HashMap<>();
+        for (Class<?> i : interfacesOf(type)) {
+            for (Method m : i.getDeclaredMethods()) {
+                Op op = m.getAnnotation(Op.class);
+                if (op == null || m.isBridge() || m.isSynthetic() || Modifier.isStatic(m.getModifiers())
+                        || fromClasses.contains(op.value())) {
+                    continue;
+                }
+                Class<?> earlier = declaredBy.get(op.value());
+                if (earlier == null || (earlier != i && earlier.isAssignableFrom(i))) {
+                    ops.put(op.value(), Operation.of(op.value(), m, Operation.Kind.INSTANCE, owner));
+                    declaredBy.put(op.value(), i);
+                } else if (earlier == i) {
+                    throw new IllegalArgumentException("selector '" + op.value() + "' is defined twice in " + i.getName());
+                } else if (!i.isAssignableFrom(earlier)) {
+                    throw new IllegalArgumentException("selector '" + op.value() + "' of " + type.getName()
+                            + " is defined by both " + earlier.getName() + " and " + i.getName()
+                            + "; define it on the class to choose");
+                }
+            }
+        }
+    }
+
+    /** Every interface a class implements, directly or through superclasses and superinterfaces, nearest first. */
+    private static Set<Class<?>> interfacesOf(Class<?> type) {
+        Set<Class<?>> found = new LinkedHashSet<>();
+        ArrayDeque<Class<?>> queue = new ArrayDeque<>();
+        for (Class<?> k = type; k != null; k = k.getSuperclass()) {
+            queue.addAll(List.of(k.getInterfaces()));
+        }
+        while (!queue.isEmpty()) {
+            Class<?> i = queue.removeFirst();
+            if (found.add(i)) {
+                queue.addAll(List.of(i.getInterfaces()));
+            }
+        }
+        return found;
     }
 
     private static void put(Map<String, Operation> ops, String selector, Operation op, Class<?> type) {

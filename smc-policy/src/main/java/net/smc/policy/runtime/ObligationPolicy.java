@@ -25,6 +25,12 @@ public final class ObligationPolicy extends ManagedObject {
 
     public ObligationPolicy(CellRuntime runtime) {
         this.runtime = runtime;
+        runtime.created(this);
+    }
+
+    /** The nodes the policy is attached to, in the order it was attached. */
+    public List<ManagedObject> attachments() {
+        return List.copyOf(attachedTo);
     }
 
     @Op("create")

@@ -8,7 +8,8 @@ import java.lang.annotation.Target;
 /**
  * Exposes a Java method or constructor as a PonderTalk operation with the given selector: unary
  * ({@code size}), binary ({@code +}, one argument) or keyword ({@code at:put:}, one argument per
- * colon). Instance methods become the object's operations; constructors and static methods become
+ * colon). Instance methods (also those declared on implemented interfaces; the class wins) become
+ * the object's operations; constructors and static methods become
  * its factory's. A leading parameter of type {@link CallContext} is hidden from PonderTalk and
  * receives the call's context. Arity is checked when the class is first used.
  *

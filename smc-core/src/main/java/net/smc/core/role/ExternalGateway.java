@@ -1,0 +1,131 @@
+package net.smc.core.role;
+
+import java.util.List;
+import java.util.Objects;
+import net.smc.core.role.ExternalCallException.Kind;
+import net.smc.policy.Cell;
+import net.smc.policy.runtime.Domain;
+import net.smc.policy.runtime.EventTemplate;
+import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.runtime.PonderError;
+
+/**
+ * Where invocations from other vehicles enter a role's external interface (the paper's section
+ * II-B.2.A): management operations on the role object, exported task operations, and required
+ * events. Each is sent with the caller's subject, {@code root/role/<role>/peers/<caller role>/<cell>},
+ * through {@link Cell#sendAs}, so the receiving role's authorisation policies decide it (with the
+ * cell's default decision, deny in a deployed cell, when none applies). The messaging layer turns
+ * incoming requests into calls of this class.
+ *
+ * <pre>{@code
+ * ExternalGateway gateway = new ExternalGateway(roleManager);
+ * Object answer = gateway.invoke(new Caller("c7", "commander"), "surveyor", "goTo:y:", 3, 4);
+ * gateway.raise(new Caller("c9", "hdetector"), "aggregator", "hazardDetected", "hazardDetected", "c9", "gas", 1, 2);
+ * }</pre>
+ */
+public final class ExternalGateway {
+    private static final String DENIAL = "Ponder2AuthorizationException";
+
+    private final RoleManager roles;
+
+    public ExternalGateway(RoleManager roles) {
+        this.roles = Objects.requireNonNull(roles, "roles");
+    }
+
+    /**
+     * Invokes an operation of a role's external interface on behalf of {@code caller}.
+     *
+     * @return the operation's answer, as a PonderTalk value
+     * @throws ExternalCallException when the role is absent, the operation is not in its external
+     *                               interface, authorisation denies it, or it fails
+     */
+    public Object invoke(Caller caller, String role, String selector, Object... args) {
+        RoleObject object = loaded(role);
+        Object receiver;
+        String what;
+        if (ExternalInterface.MANAGEMENT_OPERATIONS.contains(selector)) {
+            receiver = object;
+            what = "management operation '" + selector + "' of role '" + role + "'";
+        } else {
+            TaskOperation exported = object.role().external().exportedOperation(selector);
+            if (exported == null) {
+                throw new ExternalCallException(Kind.NOT_IN_INTERFACE, "operation '" + selector
+                        + "' is not in the external interface of role '" + role + "' (it exports "
+                        + object.role().external().exported().stream().map(TaskOperation::selector).toList() + ")");
+            }
+            receiver = object.part(RoleObject.TASK).get(exported.task());
+            what = "operation '" + selector + "' of task '" + exported.task() + "' of role '" + role + "'";
+        }
+        return send(caller, object, receiver, selector, args, what);
+    }
+
+    /**
+     * Raises, on behalf of {@code caller}, an event the role requires ({@code root/event/<event>});
+     * it is checked as the selector {@code create:} on the event template, and delivered from the
+     * caller's subject up to root.
+     *
+     * @param values the event's attribute values, in the template's order
+     * @throws ExternalCallException as {@link #invoke}
+     */
+    public void raise(Caller caller, String role, String event, Object... values) {
+        RoleObject object = loaded(role);
+        if (!object.role().external().requiredEvents().contains(event)) {
+            throw new ExternalCallException(Kind.NOT_IN_INTERFACE, "event '" + event
+                    + "' is not required by role '" + role + "', so other roles may not raise it there (it requires "
+                    + object.role().external().requiredEvents() + ")");
+        }
+        Object template = roles.cell().root().get("event") instanceof Domain events ? events.get(event) : null;
+        if (!(template instanceof EventTemplate)) {
+            throw new ExternalCallException(Kind.FAILED, "event '" + event + "' required by role '" + role
+                    + "' has no template at root/event/" + event);
+        }
+        send(caller, object, template, "create:", new Object[] {List.of(values)}, "event '" + event + "' of role '" + role + "'");
+    }
+
+    private RoleObject loaded(String role) {
+        RoleObject object = roles.roleObject(role);
+        if (object == null) {
+            throw new ExternalCallException(Kind.NO_SUCH_ROLE, "role '" + role + "' is not loaded on this cell");
+        }
+        return object;
+    }
+
+    private Object send(Caller caller, RoleObject object, Object receiver, String selector, Object[] args, String what) {
+        if (receiver == null) {
+            throw new ExternalCallException(Kind.FAILED, what + " has no receiver: its task is missing from root/role/"
+                    + object.role().name() + "/task");
+        }
+        ManagedObject subject = peer(object, caller);
+        try {
+            return roles.cell().sendAs(subject, receiver, selector, args);
+        } catch (PonderError e) {
+            if (e.getMessage() != null && e.getMessage().startsWith(DENIAL)) {
+                throw new ExternalCallException(Kind.DENIED, "role '" + caller.role() + "' on cell '" + caller.cell()
+                        + "' may not use " + what + ": denied by the authorisation policies of role '"
+                        + object.role().name() + "' (" + e.getMessage() + ")");
+            }
+            throw new ExternalCallException(Kind.FAILED, what + ", invoked by role '" + caller.role() + "' on cell '"
+                    + caller.cell() + "', failed: " + e.getMessage());
+        }
+    }
+
+    /** The caller's subject, made on its first call; it lives as long as the role. */
+    private ManagedObject peer(RoleObject object, Caller caller) {
+        Domain peers = object.part(RoleObject.PEERS);
+        Object ofRole = peers.get(caller.role());
+        if (ofRole == null) {
+            ofRole = new Domain(roles.cell().runtime());
+            peers.put(caller.role(), ofRole);
+        }
+        if (!(ofRole instanceof Domain callers)) {
+            throw new ExternalCallException(Kind.FAILED, "root/role/" + object.role().name() + "/peers/" + caller.role()
+                    + " is not a domain; it must hold the subjects of role '" + caller.role() + "'");
+        }
+        if (callers.get(caller.cell()) instanceof ManagedObject existing) {
+            return existing;
+        }
+        ManagedObject subject = ManagedObject.wrap(new Peer(caller));
+        callers.put(caller.cell(), subject);
+        return subject;
+    }
+}

@@ -1,0 +1,50 @@
+package net.smc.core.role;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import net.smc.policy.Cell;
+import net.smc.policy.runtime.ManagedObject;
+
+/**
+ * Hears of every obligation and authorisation policy a cell creates while a role loads, however a
+ * file made it (a factory, {@code root load:}), so that the Role-Manager knows every policy a file
+ * created, even one the file activated and never stored.
+ */
+final class PolicyFactoryTap {
+    private PolicyFactoryTap() {
+    }
+
+    /** A listening tap; {@link #close()} stops listening. */
+    static final class Installed implements AutoCloseable {
+        private final Cell cell;
+        private final List<ManagedObject> created = new ArrayList<>();
+        private final Consumer<ManagedObject> listener = created::add;
+        private boolean open = true;
+
+        private Installed(Cell cell) {
+            this.cell = cell;
+            cell.runtime().listenCreations(listener);
+        }
+
+        /** Policies created since the last call, in order. */
+        List<ManagedObject> drain() {
+            List<ManagedObject> out = List.copyOf(created);
+            created.clear();
+            return out;
+        }
+
+        /** Stops listening; closing twice is harmless. */
+        @Override
+        public void close() {
+            if (open) {
+                open = false;
+                cell.runtime().unlistenCreations(listener);
+            }
+        }
+    }
+
+    static Installed install(Cell cell) {
+        return new Installed(cell);
+    }
+}

@@ -1,0 +1,12 @@
+package net.smc.core.role;
+
+/**
+ * An operation a role expects a collaborating role to export (the paper's external interface,
+ * item iv), such as the aggregator's {@code addHazard:x:y:} required by the hazard detector.
+ */
+public record RequiredOperation(String role, String selector) {
+    public RequiredOperation {
+        Names.check("role of a required operation", role);
+        Names.checkSelector("selector required from role '" + role + "'", selector);
+    }
+}
