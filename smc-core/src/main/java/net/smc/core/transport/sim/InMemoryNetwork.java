@@ -3,6 +3,7 @@ package net.smc.core.transport.sim;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.NavigableMap;
@@ -36,7 +37,7 @@ public final class InMemoryNetwork {
     private final Links links;
     private final Partitions partitions = new Partitions();
     private final NavigableMap<Address, SimTransport> attached = new TreeMap<>();
-    private final Map<Address, SimTransport> crashed = new HashMap<>();   // looked up only
+    private final Set<Address> crashed = new HashSet<>();                 // looked up only
     private final Map<Address, Counters> counters = new HashMap<>();      // looked up, or summed
     private final List<NetworkObserver> observers = new ArrayList<>();
     private RadioModel radio = RadioModel.EVERYONE;
@@ -86,7 +87,7 @@ public final class InMemoryNetwork {
             throw new IllegalArgumentException("no node is attached at " + address + "; only an attached node can crash");
         }
         transport.crash();
-        crashed.put(address, transport);
+        crashed.add(address);
     }
 
     /**
@@ -96,7 +97,7 @@ public final class InMemoryNetwork {
      * @throws IllegalArgumentException when the node at {@code address} has not crashed
      */
     public Transport restart(Address address) {
-        if (!crashed.containsKey(Objects.requireNonNull(address, "address"))) {
+        if (!crashed.contains(Objects.requireNonNull(address, "address"))) {
             throw new IllegalArgumentException("node " + address + " has not crashed; only a crashed node can restart");
         }
         return attach(address);
@@ -137,7 +138,7 @@ public final class InMemoryNetwork {
         observers.add(Objects.requireNonNull(observer, "observer"));
     }
 
-    /** The attached nodes, in ascending order. */
+    /** The attached nodes in ascending order: a read-only view that follows attaches, crashes and closes. */
     public Set<Address> attached() {
         return Collections.unmodifiableSet(attached.navigableKeySet());
     }

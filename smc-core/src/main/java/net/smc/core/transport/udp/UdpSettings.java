@@ -9,7 +9,7 @@ import net.smc.core.transport.Address;
  * sizes are bytes. Start from {@link #defaults()} (one machine, loopback) and change what differs:
  * <pre>{@code
  * UdpSettings.defaults().withPort(4001)                                     // one machine
- * UdpSettings.defaults().withBindHost("0.0.0.0").withAdvertisedHost("10.0.0.7")
+ * UdpSettings.defaults().withBindHost("0.0.0.0", "10.0.0.7")
  *         .withBroadcast("10.0.0.255", 47474)                               // a subnet
  * }</pre>
  *
@@ -67,6 +67,11 @@ public record UdpSettings(String bindHost, int port, String advertisedHost, Stri
     }
 
     public UdpSettings withBindHost(String bindHost) {
+        return new UdpSettings(bindHost, port, advertisedHost, broadcastHost, broadcastPort, receiveBufferBytes);
+    }
+
+    /** Binds {@code bindHost} and tells other cells to reply to {@code advertisedHost} (null: to {@code bindHost}). */
+    public UdpSettings withBindHost(String bindHost, String advertisedHost) {
         return new UdpSettings(bindHost, port, advertisedHost, broadcastHost, broadcastPort, receiveBufferBytes);
     }
 

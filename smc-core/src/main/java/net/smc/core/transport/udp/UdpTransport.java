@@ -69,7 +69,7 @@ public final class UdpTransport implements Transport {
     private final ChannelFutureListener countFailure;
 
     private UdpTransport(UdpSettings settings, UdpEventLoop loop, boolean ownsLoop, UdpStats stats, Inbox inbox,
-                         Channel unicast, Channel broadcastChannel, Address localAddress) throws IOException {
+                         Channel unicast, Channel broadcastChannel, Address localAddress, InetSocketAddress broadcastTarget) {
         this.settings = settings;
         this.loop = loop;
         this.ownsLoop = ownsLoop;
@@ -78,7 +78,7 @@ public final class UdpTransport implements Transport {
         this.unicast = unicast;
         this.broadcastChannel = broadcastChannel;
         this.localAddress = localAddress;
-        this.broadcastTarget = new InetSocketAddress(ipv4(settings.broadcastHost()), settings.broadcastPort());
+        this.broadcastTarget = broadcastTarget;
         this.countFailure = future -> {
             if (!future.isSuccess()) {
                 stats.sendFailures.increment();
@@ -120,6 +120,7 @@ public final class UdpTransport implements Transport {
         if (Objects.requireNonNull(loop, "loop").isShutDown()) {
             throw new IllegalStateException("the UDP event loop is closed; a transport cannot open on it");
         }
+        InetSocketAddress broadcastTarget = new InetSocketAddress(ipv4(settings.broadcastHost()), settings.broadcastPort());
         UdpStats stats = new UdpStats();
         Executor serial = cellExecutor instanceof SerialExecutor ? cellExecutor : new SerialExecutor(cellExecutor);
         Inbox inbox = new Inbox(serial, stats);
@@ -143,7 +144,7 @@ public final class UdpTransport implements Transport {
         }
         log.debug("UDP transport {} open (broadcast {}:{}, {})", local, settings.broadcastHost(),
                 settings.broadcastPort(), loop.isEpoll() ? "epoll" : "nio");
-        return new UdpTransport(settings, loop, ownsLoop, stats, inbox, unicast, broadcast, local);
+        return new UdpTransport(settings, loop, ownsLoop, stats, inbox, unicast, broadcast, local, broadcastTarget);
     }
 
     @Override
@@ -199,6 +200,10 @@ public final class UdpTransport implements Transport {
             loop.close();
         }
         log.debug("UDP transport {} closed", localAddress);
+    }
+
+    UdpEventLoop loop() {
+        return loop;
     }
 
     @Override
