@@ -11,12 +11,13 @@
  * real-time clock and scheduler of a deployed cell, and the serial executor that is its thread) and
  * {@code transport.udp} (Netty UDP, the only package that uses Netty).
  *
- * <p>A simulated pair of cells, in five lines:
+ * <p>A simulated pair of cells, in six lines ({@code heard} ends as {@code ["127.0.0.1:4001 says hello"]}):
  * <pre>{@code
  * SimulationScheduler scheduler = new SimulationScheduler();
  * InMemoryNetwork network = new InMemoryNetwork(scheduler, 42);
  * Transport a = network.attach(Address.loopback(4001)), b = network.attach(Address.loopback(4002));
- * b.setReceiver((from, data) -> System.out.println(from + " says " + new String(data)));
+ * List<String> heard = new ArrayList<>();
+ * b.setReceiver((from, data) -> heard.add(from + " says " + new String(data)));
  * a.send(b.localAddress(), "hello".getBytes());  scheduler.runUntilIdle(1_000);
  * }</pre>
  *

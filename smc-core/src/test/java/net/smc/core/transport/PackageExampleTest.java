@@ -10,19 +10,18 @@ import net.smc.core.transport.sim.SimulationScheduler;
 
 import org.junit.jupiter.api.Test;
 
-/** The example of this package's javadoc, as written there (printing aside). */
+/** The example of this package's javadoc, as written there. */
 class PackageExampleTest {
 
     @Test
     void aSimulatedPairOfCells_talk() {
-        List<String> out = new ArrayList<>();
-
         SimulationScheduler scheduler = new SimulationScheduler();
         InMemoryNetwork network = new InMemoryNetwork(scheduler, 42);
         Transport a = network.attach(Address.loopback(4001)), b = network.attach(Address.loopback(4002));
-        b.setReceiver((from, data) -> out.add(from + " says " + new String(data)));
+        List<String> heard = new ArrayList<>();
+        b.setReceiver((from, data) -> heard.add(from + " says " + new String(data)));
         a.send(b.localAddress(), "hello".getBytes());  scheduler.runUntilIdle(1_000);
 
-        assertEquals(List.of("127.0.0.1:4001 says hello"), out);
+        assertEquals(List.of("127.0.0.1:4001 says hello"), heard);
     }
 }
