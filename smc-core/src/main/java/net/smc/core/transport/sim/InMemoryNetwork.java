@@ -1,0 +1,241 @@
+package net.smc.core.transport.sim;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.NavigableMap;
+import java.util.Objects;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.random.RandomGenerator;
+import java.util.random.RandomGeneratorFactory;
+
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Transport;
+
+/**
+ * A simulated radio network on a {@link SimulationScheduler}: nodes attach and get a
+ * {@link Transport}; datagrams travel with per-link latency, jitter, loss, duplication and
+ * re-ordering ({@link LinkProfile}), can be cut by partitions and by a {@link RadioModel}, and are
+ * lost with a node that crashes. One seed gives one run: the same sends give the same deliveries at
+ * the same times, to the byte.
+ *
+ * <p>The fate of each copy is decided when it is sent (partition, radio reach, loss, delay,
+ * duplicate), in this order, with random draws in a fixed order ({@link Links}); whether anyone is
+ * there to take it is decided when it arrives. A broadcast makes one copy for every other attached
+ * node, in ascending address order. Every copy is counted once, as delivered or under the reason it
+ * was dropped ({@link NodeCounters}), and reported to the {@link NetworkObserver}s.
+ *
+ * <p>Single-threaded, like the scheduler it runs on. See
+ * <a href="../doc-files/transport.md">the transport design note</a>.
+ */
+public final class InMemoryNetwork {
+    private final SimulationScheduler scheduler;
+    private final Links links;
+    private final Partitions partitions = new Partitions();
+    private final NavigableMap<Address, SimTransport> attached = new TreeMap<>();
+    private final Set<Address> crashed = new HashSet<>();                 // looked up only
+    private final Map<Address, Counters> counters = new HashMap<>();      // looked up, or summed
+    private final List<NetworkObserver> observers = new ArrayList<>();
+    private RadioModel radio = RadioModel.EVERYONE;
+
+    /**
+     * A network whose random draws come from a {@code L64X128MixRandom} generator seeded with
+     * {@code seed} (an algorithm fixed by the JDK, so a seed means the same run on every JVM).
+     */
+    public InMemoryNetwork(SimulationScheduler scheduler, long seed) {
+        this(scheduler, RandomGeneratorFactory.of("L64X128MixRandom").create(seed));
+    }
+
+    /** A network drawing from {@code random}; it must be seeded for runs to replay. */
+    public InMemoryNetwork(SimulationScheduler scheduler, RandomGenerator random) {
+        this.scheduler = Objects.requireNonNull(scheduler, "scheduler");
+        this.links = new Links(random);
+    }
+
+    /**
+     * Attaches a node at {@code address} and returns its endpoint.
+     *
+     * @throws IllegalArgumentException when a node is attached there already
+     */
+    public Transport attach(Address address) {
+        Objects.requireNonNull(address, "address");
+        if (attached.containsKey(address)) {
+            throw new IllegalArgumentException("address " + address + " is already attached; close or crash its node first");
+        }
+        crashed.remove(address);
+        SimTransport transport = new SimTransport(this, address);
+        attached.put(address, transport);
+        return transport;
+    }
+
+    /**
+     * Crashes the node at {@code address}: it is detached without being told. What it sends from
+     * now on is dropped ({@link DropReason#SENDER_DOWN}); what arrives for it is dropped
+     * ({@link DropReason#RECEIVER_DOWN}); broadcasts leave it out. Copies already in flight from it
+     * still arrive, as they would on a real network. Its timers are the simulation's to stop
+     * (see {@link net.smc.core.transport.TimerGroup}).
+     *
+     * @throws IllegalArgumentException when no node is attached there
+     */
+    public void crash(Address address) {
+        SimTransport transport = attached.remove(Objects.requireNonNull(address, "address"));
+        if (transport == null) {
+            throw new IllegalArgumentException("no node is attached at " + address + "; only an attached node can crash");
+        }
+        transport.crash();
+        crashed.add(address);
+    }
+
+    /**
+     * Restarts a crashed node: a new endpoint at the same address, as a rebooted vehicle gets. The
+     * old endpoint stays dead.
+     *
+     * @throws IllegalArgumentException when the node at {@code address} has not crashed
+     */
+    public Transport restart(Address address) {
+        if (!crashed.contains(Objects.requireNonNull(address, "address"))) {
+            throw new IllegalArgumentException("node " + address + " has not crashed; only a crashed node can restart");
+        }
+        return attach(address);
+    }
+
+    /** Cuts every link between a node of {@code sideA} and a node of {@code sideB}, both ways, until {@link #heal()}. */
+    public void partition(Set<Address> sideA, Set<Address> sideB) {
+        partitions.add(sideA, sideB);
+    }
+
+    /** Removes every partition. */
+    public void heal() {
+        partitions.healAll();
+    }
+
+    /** Sets the profile of every link that has no profile of its own. */
+    public void setDefaultLink(LinkProfile profile) {
+        links.setDefault(profile);
+    }
+
+    /** Sets the profile of the directed link from {@code from} to {@code to} (the other way is separate). */
+    public void setLink(Address from, Address to, LinkProfile profile) {
+        links.set(from, to, profile);
+    }
+
+    /** Forgets every link's own profile; all links use the default again. */
+    public void clearLinks() {
+        links.clearOverrides();
+    }
+
+    /** Sets the radio model, asked for every copy sent from now on. */
+    public void setRadio(RadioModel radio) {
+        this.radio = Objects.requireNonNull(radio, "radio");
+    }
+
+    /** Adds an observer; observers are told in the order they were added. */
+    public void addObserver(NetworkObserver observer) {
+        observers.add(Objects.requireNonNull(observer, "observer"));
+    }
+
+    /** The attached nodes in ascending order: a read-only view that follows attaches, crashes and closes. */
+    public Set<Address> attached() {
+        return Collections.unmodifiableSet(attached.navigableKeySet());
+    }
+
+    /** What the network did for {@code address}, over all its node's lives; zeros if nothing. */
+    public NodeCounters counters(Address address) {
+        Counters c = counters.get(address);
+        return c == null ? NodeCounters.ZERO : c.snapshot();
+    }
+
+    /** The sum of every address's counters. */
+    public NodeCounters totals() {
+        NodeCounters sum = NodeCounters.ZERO;
+        for (Counters c : counters.values()) {
+            sum = sum.plus(c.snapshot());
+        }
+        return sum;
+    }
+
+    // ---- called by SimTransport ----
+
+    void send(SimTransport sender, Address to, byte[] data) {
+        countersOf(sender.localAddress()).sent++;
+        route(sender, to, data);
+    }
+
+    void broadcast(SimTransport sender, byte[] data) {
+        countersOf(sender.localAddress()).sent++;
+        for (Address to : attached.keySet()) {   // route never attaches or detaches
+            if (!to.equals(sender.localAddress())) {
+                route(sender, to, data);
+            }
+        }
+    }
+
+    void detach(SimTransport transport) {
+        attached.remove(transport.localAddress(), transport);
+    }
+
+    // ---- one copy's fate ----
+
+    private void route(SimTransport sender, Address to, byte[] data) {
+        Address from = sender.localAddress();
+        countersOf(from).copies++;
+        if (sender.isCrashed()) {
+            drop(from, to, DropReason.SENDER_DOWN, data, from);
+            return;
+        }
+        if (partitions.separates(from, to)) {
+            drop(from, to, DropReason.PARTITION, data, to);
+            return;
+        }
+        if (!radio.reachable(from, to)) {
+            drop(from, to, DropReason.RADIO, data, to);
+            return;
+        }
+        LinkProfile profile = links.profile(from, to);
+        if (links.lost(profile)) {
+            drop(from, to, DropReason.LOSS, data, to);
+            return;
+        }
+        scheduleArrival(from, to, data, links.delayMillis(profile));
+        if (links.duplicated(profile)) {
+            countersOf(from).copies++;
+            countersOf(to).duplicated++;
+            scheduleArrival(from, to, data, links.delayMillis(profile));
+        }
+    }
+
+    private void scheduleArrival(Address from, Address to, byte[] data, long delayMillis) {
+        scheduler.schedule(delayMillis, () -> arrive(from, to, data));
+    }
+
+    private void arrive(Address from, Address to, byte[] data) {
+        SimTransport destination = attached.get(to);
+        if (destination == null) {
+            drop(from, to, DropReason.RECEIVER_DOWN, data, to);
+        } else if (!destination.hasReceiver()) {
+            drop(from, to, DropReason.NO_RECEIVER, data, to);
+        } else {
+            countersOf(to).delivered++;
+            byte[] copy = data.clone();   // each copy is the receiver's own to keep or change
+            for (NetworkObserver o : observers) {
+                o.delivered(scheduler.nowMillis(), from, to, copy);
+            }
+            destination.deliver(from, copy);
+        }
+    }
+
+    private void drop(Address from, Address to, DropReason reason, byte[] data, Address countedAt) {
+        countersOf(countedAt).dropped(reason);
+        for (NetworkObserver o : observers) {
+            o.dropped(scheduler.nowMillis(), from, to, reason, data);
+        }
+    }
+
+    private Counters countersOf(Address address) {
+        return counters.computeIfAbsent(address, a -> new Counters());
+    }
+}
