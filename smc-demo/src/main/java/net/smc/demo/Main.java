@@ -9,13 +9,13 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
- * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}) and
- * {@code shell} ({@link ShellCommand}). Only {@link #main} touches the process (its streams and
+ * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}),
+ * {@code shell} ({@link ShellCommand}) and {@code validate} ({@link ValidateCommand}). Only {@link #main} touches the process (its streams and
  * its exit status); {@link #commandLine(Io)} builds the same command on any streams.
  */
 @Command(name = "smc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         synopsisSubcommandLabel = "COMMAND",
-        description = "Runs PonderTalk policy scripts in a self-managed cell's policy engine.",
+        description = "Runs PonderTalk policy scripts in a self-managed cell's policy engine, and checks missions.",
         footer = {"%nRun 'smc COMMAND --help' for a command's options and exit statuses.",
             "Exit status 2 means a usage error; the commands explain their other statuses."})
 public final class Main implements Callable<Integer> {
@@ -33,7 +33,8 @@ public final class Main implements Callable<Integer> {
     static CommandLine commandLine(Io io) {
         CommandLine commandLine = new CommandLine(new Main())
                 .addSubcommand(new RunCommand(io))
-                .addSubcommand(new ShellCommand(io));
+                .addSubcommand(new ShellCommand(io))
+                .addSubcommand(new ValidateCommand(io));
         // After the subcommands are added, so that these settings reach them too.
         commandLine.setOut(io.stdout());
         commandLine.setErr(io.stderr());
@@ -44,7 +45,7 @@ public final class Main implements Callable<Integer> {
     /** {@code smc} without a command. */
     @Override
     public Integer call() {
-        throw new ParameterException(spec.commandLine(), "no command given: use run or shell");
+        throw new ParameterException(spec.commandLine(), "no command given: use run, shell or validate");
     }
 
     /** The version line of {@code smc --version} and the subcommands' {@code --version}. */

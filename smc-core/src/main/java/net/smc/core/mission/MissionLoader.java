@@ -1,0 +1,149 @@
+package net.smc.core.mission;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import net.smc.core.mission.ClassSpec.ParamDecl;
+import net.smc.core.mission.ClassSpec.Ref;
+import net.smc.core.mission.ClassSpec.RoleDecl;
+import net.smc.core.mission.InstanceSpec.RoleEntry;
+import net.smc.policy.PolicyRepository;
+
+/**
+ * Start here: loads a mission instance file, the mission class file it names, checks both and
+ * resolves every policy URI in a policy repository, giving an immutable {@link Mission}. This is
+ * step 1 of the data flow in DESIGN.md: the acting commander loads what the command base sent.
+ *
+ * <pre>{@code
+ * MissionLoader loader = new MissionLoader(new PolicyRepository(Path.of("policies")));
+ * try {
+ *     Mission mission = loader.load(Path.of("missions/reconnaissance.instance.xml"));
+ *     TeamConfiguration team = TeamPlanner.plan(mission, vehicles);
+ * } catch (MissionException e) {
+ *     e.errors().forEach(err -> log.error("{}", err));   // FILE:LINE:COL: <element>: message
+ * }
+ * }</pre>
+ *
+ * <p>The instance names its class with {@code <missionClass href="reconnaissance.class.xml">},
+ * relative to the instance file. Every error of both files is reported, not only the first; the
+ * formats and rules are in {@code missions/README.md}. A loader keeps no state between loads
+ * (its Stax factory is configured once and only creates readers), so threads may share one.
+ */
+public final class MissionLoader {
+    private final PolicyRepository repository;
+    private final XmlReader xml = new XmlReader();
+
+    /** A loader that resolves policy URIs in {@code repository}. */
+    public MissionLoader(PolicyRepository repository) {
+        this.repository = java.util.Objects.requireNonNull(repository, "repository");
+    }
+
+    /**
+     * Loads and checks an instance file and its class file.
+     *
+     * @throws MissionException naming every error of both files (class file first)
+     * @throws IOException      when the instance file itself cannot be read (an unreadable class
+     *                          file is an error of the instance, reported in a MissionException)
+     */
+    public Mission load(Path instanceFile) throws MissionException, IOException {
+        String text = Files.readString(instanceFile);
+        List<MissionError> instanceErrors = new ArrayList<>();
+        List<MissionError> classErrors = new ArrayList<>();
+        Reporter reporter = new Reporter(instanceFile, instanceErrors);
+        XmlElement root = xml.read(text, reporter);
+        InstanceSpec instance = root == null ? null : InstanceReader.read(root, reporter);
+        ClassSpec spec = instance == null ? null : readClass(instanceFile, instance, reporter, classErrors);
+        if (instance != null) {
+            InstanceRules.check(instance, spec, new PolicyCheck(repository), reporter);
+        }
+        List<MissionError> errors = new ArrayList<>(byPosition(classErrors));
+        errors.addAll(byPosition(instanceErrors));
+        if (!errors.isEmpty()) {
+            throw new MissionException(errors);
+        }
+        return build(spec, instance);
+    }
+
+    private ClassSpec readClass(Path instanceFile, InstanceSpec instance, Reporter reporter, List<MissionError> errors) {
+        if (instance.classHref() == null) {
+            return null;
+        }
+        String href = instance.classHref();
+        Path classFile;
+        try {
+            classFile = instanceFile.resolveSibling(href).normalize();
+        } catch (InvalidPathException e) {
+            reporter.error(instance.classAt(), "invalid class file name '" + href + "'; <missionClass href> names a file");
+            return null;
+        }
+        String problem = !Files.exists(classFile) ? "no such file"
+                : !Files.isRegularFile(classFile) ? "not a regular file"
+                : null;
+        String text = null;
+        if (problem == null) {
+            try {
+                text = Files.readString(classFile);
+            } catch (IOException e) {
+                problem = String.valueOf(e.getMessage());
+            }
+        }
+        if (problem != null) {
+            reporter.error(instance.classAt(), "cannot read mission class '" + href + "': " + problem
+                    + "; <missionClass href> names a mission class file relative to this instance");
+            return null;
+        }
+        Reporter classReporter = new Reporter(classFile, errors);
+        XmlElement root = xml.read(text, classReporter);
+        ClassSpec spec = root == null ? null : ClassReader.read(root, classReporter);
+        if (spec != null) {
+            ClassRules.check(spec, classReporter);
+        }
+        return spec;
+    }
+
+    private static List<MissionError> byPosition(List<MissionError> errors) {
+        List<MissionError> sorted = new ArrayList<>(errors);
+        sorted.sort(Comparator.comparingInt(MissionError::line).thenComparingInt(MissionError::column));
+        return sorted;
+    }
+
+    /** The mission both files describe; called only when no error was found. */
+    private static Mission build(ClassSpec spec, InstanceSpec instance) {
+        Map<String, String> primaryOf = new HashMap<>();
+        spec.secondary().forEach(s -> primaryOf.put(s.role().name(), s.primary().name()));
+        List<MissionRole> roles = new ArrayList<>();
+        for (RoleDecl decl : spec.roles()) {
+            RoleEntry entry = instance.role(decl.name());
+            int minimal = decl.hasCardinality() ? entry.cardinality().minimal() : 1;
+            int optimal = decl.hasCardinality() ? entry.cardinality().optimal() : 1;
+            roles.add(new MissionRole(decl.name(), minimal, optimal, decl.manages().stream().map(Ref::name).toList(),
+                    decl.requirement(), Optional.ofNullable(primaryOf.get(decl.name())),
+                    entry.policies().stream().map(Ref::name).toList(),
+                    entry.authorisations().stream().map(Ref::name).toList()));
+        }
+        Colocation colocation = new Colocation(
+                spec.parallel().stream().map(p -> new Colocation.Parallel(p.role().name(),
+                        p.with().stream().map(Ref::name).toList())).toList(),
+                spec.exclusive().stream().map(e -> new Colocation.Exclusive(
+                        e.roles().stream().map(Ref::name).toList())).toList());
+        Map<String, Parameter> parameters = new LinkedHashMap<>();
+        for (ParamDecl decl : spec.parameters()) {
+            String text = instance.parameters().stream().filter(v -> v.name().equals(decl.name())).findFirst()
+                    .orElseThrow().text();
+            parameters.put(decl.name(), new Parameter(decl.name(), decl.type(), decl.type().parse(text)));
+        }
+        try {
+            return new Mission(spec.name(), instance.name(), roles, colocation, parameters);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalStateException("mission files passed every check but do not make a mission: " + e.getMessage(), e);
+        }
+    }
+}

@@ -1,0 +1,226 @@
+package net.smc.core.mission;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import net.smc.core.capability.CapabilityRequirement;
+import net.smc.policy.PolicyRepository;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class MissionLoaderTest {
+    /** The paper's Table III with its typos corrected and its comment line made a comment. */
+    static final String TABLE_III = """
+            <!--Mission Class Specification-->
+            <xml>
+            <missionClassParameters>
+                <missionClassName>Reconnaissance
+                </missionClassName>
+            </missionClassParameters>
+            <constraints>
+                <cardinality/>
+                <colocation/>
+            </constraints>
+            <missionParameters>
+               <!--A mission class instance should provide values
+                for these parameters-->
+                <comTimeout> int</comTimeout>
+                <failureTimeout>int</failureTimeout>
+            </missionParameters>
+            <commanderBehaviour>
+                <roleManagement>
+                    <manages>surveyor</manages>
+                    <manages>aggregator</manages>
+                </roleManagement>
+            </commanderBehaviour>
+            <surveyorBehaviour>
+                <cardinality>int</cardinality>
+                <roleManagement>
+                    <manages>hdetector</manages>
+                    <manages>relay</manages>
+                </roleManagement>
+            </surveyorBehaviour>
+            <aggregatorBehaviour>
+                <cardinality>int</cardinality>
+                <roleManagement/>
+            </aggregatorBehaviour>
+            <hdetectorBehaviour>
+                <cardinality>int</cardinality>
+                <roleManagement/>
+            </hdetectorBehaviour>
+            <relayBehaviour>
+                <cardinality>int</cardinality>
+                <roleManagement/>
+            </relayBehaviour>
+            </xml>
+            """;
+
+    @TempDir
+    Path dir;
+
+    private MissionLoader loader;
+
+    @BeforeEach
+    void setUp() throws IOException {
+        for (String role : List.of("commander", "surveyor", "aggregator", "hdetector", "relay")) {
+            write("policies/roles/" + role + "/mission.p2", "root print: \"" + role + "\".\n");
+        }
+        loader = new MissionLoader(new PolicyRepository(dir.resolve("policies")));
+    }
+
+    private Path write(String name, String text) throws IOException {
+        Path file = dir.resolve(name);
+        Files.createDirectories(file.getParent());
+        Files.writeString(file, text);
+        return file;
+    }
+
+    private static String role(String name, int minimal, int optimal) {
+        return "<" + name + "><cardinality><minimal>" + minimal + "</minimal><optimal>" + optimal + "</optimal></cardinality>"
+                + "<policy>policy:/roles/" + name + "/mission</policy></" + name + ">\n";
+    }
+
+    private static String reconnaissanceInstance(String href) {
+        return "<xml>\n<missionInstanceParameters><missionInstanceName>Test</missionInstanceName>"
+                + "<missionClass href=\"" + href + "\">Reconnaissance</missionClass></missionInstanceParameters>\n"
+                + "<missionParameters><comTimeout>500</comTimeout><failureTimeout>3000</failureTimeout></missionParameters>\n"
+                + "<commander><policy>policy:/roles/commander/mission</policy></commander>\n"
+                + role("surveyor", 2, 2) + role("aggregator", 1, 1) + role("hdetector", 0, 2) + role("relay", 0, 2)
+                + "</xml>\n";
+    }
+
+    @Test
+    void tableIII_asWrittenWithTyposCorrected_isAccepted() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+
+        Mission mission = loader.load(instance);
+
+        assertEquals("Reconnaissance", mission.className());
+        assertEquals(List.of("commander", "surveyor", "aggregator", "hdetector", "relay"), mission.roleNames());
+        assertEquals(List.of("hdetector", "relay"), mission.tree().childrenOf("surveyor"));
+        assertEquals(500, mission.parameter("comTimeout").orElseThrow().asInt());
+        assertEquals(CapabilityRequirement.none(), mission.role("relay").orElseThrow().requirement());
+        assertEquals(Colocation.none(), mission.colocation());
+    }
+
+    @Test
+    void roleWithoutCardinalityInItsClass_hasExactlyOneHolder() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+
+        MissionRole commander = loader.load(instance).commander();
+
+        assertEquals(1, commander.minimal());
+        assertEquals(1, commander.optimal());
+    }
+
+    @Test
+    void classHref_resolvesRelativeToTheInstanceFile() throws Exception {
+        write("classes/reconnaissance.class.xml", TABLE_III);
+        Path instance = write("instances/house.instance.xml", reconnaissanceInstance("../classes/reconnaissance.class.xml"));
+
+        assertEquals("Reconnaissance", loader.load(instance).className());
+    }
+
+    @Test
+    void everyErrorOfBothFiles_isReported_classFirst_eachFileByPosition() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III.replace("<manages>aggregator</manages>", "<manages>pilot</manages>")
+                .replace("<failureTimeout>int</failureTimeout>", "<failureTimeout>number</failureTimeout>"));
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml")
+                .replace("<comTimeout>500</comTimeout>", "<comTimeout>soon</comTimeout>")
+                .replace("<minimal>2</minimal><optimal>2</optimal>", "<minimal>3</minimal><optimal>2</optimal>"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertEquals(List.of(
+                "reconnaissance.class.xml:15:21: <failureTimeout>: unknown parameter type 'number'",
+                "reconnaissance.class.xml:20:9: <manages>: unknown role 'pilot'",
+                "reconnaissance.class.xml:30:1: <aggregatorBehaviour>: role 'aggregator' has no manager",
+                "reconnaissance.instance.xml:3:32: <comTimeout>: 'soon' is not an int",
+                "reconnaissance.instance.xml:5:33: <minimal>: minimal 3 is more than optimal 2"),
+                e.errors().stream().map(err -> dir.relativize(err.file()) + ":" + err.line() + ":" + err.column()
+                        + ": <" + err.element() + ">: " + err.message().substring(0, err.message().indexOf(';'))).toList());
+    }
+
+    @Test
+    void missionError_printsAsFileLineColumnElementMessage() {
+        MissionError error = new MissionError(Path.of("m.xml"), 3, 7, "manages", "unknown role 'x'; rule");
+
+        assertEquals("m.xml:3:7: <manages>: unknown role 'x'; rule", error.toString());
+        assertEquals("m.xml:1:2: not well-formed XML: oops",
+                new MissionError(Path.of("m.xml"), 1, 2, null, "not well-formed XML: oops").toString());
+    }
+
+    @Test
+    void missionException_messageListsEveryError() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml")
+                .replace("<comTimeout>500</comTimeout>", "<comTimeout>x</comTimeout>")
+                .replace("<failureTimeout>3000</failureTimeout>", "<failureTimeout>y</failureTimeout>"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertTrue(e.getMessage().startsWith("2 errors in mission files:\n"), e.getMessage());
+        assertTrue(e.getMessage().contains("'x' is not an int") && e.getMessage().contains("'y' is not an int"), e.getMessage());
+    }
+
+    @Test
+    void missingInstanceFile_isAnIOException_notAMissionError() {
+        assertThrows(NoSuchFileException.class, () -> loader.load(dir.resolve("nowhere.instance.xml")));
+    }
+
+    @Test
+    void policyIncludes_resolveBesideTheIncludingFile() throws Exception {
+        write("policies/roles/relay/common.p2", "root print: \"shared\".\n");
+        write("policies/roles/relay/mission.p2", "include \"common.p2\".\nroot print: \"relay\".\n");
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+
+        assertEquals(List.of("policy:/roles/relay/mission"), loader.load(instance).role("relay").orElseThrow().policies());
+    }
+
+    @Test
+    void policyIncludingAMissingFile_isReportedAsNotParsing() throws Exception {
+        write("policies/roles/relay/mission.p2", "include \"nowhere.p2\".\n");
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertTrue(e.errors().get(0).message().startsWith("policy 'policy:/roles/relay/mission' does not parse: "),
+                e.getMessage());
+    }
+
+    @Test
+    void dtd_isRefused() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", "<!DOCTYPE xml [<!ENTITY x SYSTEM \"file:///etc/passwd\">]>\n"
+                + reconnaissanceInstance("reconnaissance.class.xml").replace("<missionInstanceName>Test", "<missionInstanceName>&x;"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertTrue(e.errors().get(0).toString().contains("not well-formed XML"), e.getMessage());
+    }
+
+    @Test
+    void secondaryRole_getsItsPrimaryFromTheColocationRules() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III.replace("<colocation/>",
+                "<colocation><parallel role=\"relay\" with=\"surveyor\"/><secondary role=\"relay\" primary=\"surveyor\"/></colocation>"));
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+
+        Mission mission = loader.load(instance);
+
+        assertEquals(Optional.of("surveyor"), mission.role("relay").orElseThrow().primary());
+        assertEquals(Optional.empty(), mission.role("hdetector").orElseThrow().primary());
+    }
+}

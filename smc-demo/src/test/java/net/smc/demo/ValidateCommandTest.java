@@ -1,0 +1,155 @@
+package net.smc.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ValidateCommandTest {
+    private static final Path PROJECT = Path.of(System.getProperty("smc.project.dir", "..")).toAbsolutePath();
+    private static final String REPOSITORY = PROJECT.resolve("policies").toString();
+
+    @TempDir
+    Path dir;
+
+    private Smc smc;
+
+    @BeforeEach
+    void setUp() {
+        smc = Smc.in(dir);
+    }
+
+    private String writeRescueCopy(String instanceText) throws Exception {
+        Files.copy(PROJECT.resolve("missions/rescue.class.xml"), dir.resolve("rescue.class.xml"));
+        return smc.file("rescue.instance.xml", instanceText);
+    }
+
+    @Test
+    void validInstance_printsTheResolvedMission_andExitStatusIs0() {
+        Smc.Result result = smc.run("validate", "--repository", REPOSITORY,
+                PROJECT.resolve("missions/reconnaissance.instance.xml").toString());
+
+        assertEquals("", result.err());
+        assertEquals(0, result.status());
+        assertEquals(List.of(
+                "mission HouseSurvey (class Reconnaissance)",
+                "parameters:",
+                "  comTimeout = 500 (int)",
+                "  failureTimeout = 3000 (int)",
+                "roles (minimal..optimal):",
+                "  commander   1..1  needs resources [communication]",
+                "    policy policy:/roles/commander/assign",
+                "    policy policy:/roles/commander/reassign",
+                "    policy policy:/roles/commander/mission",
+                "    authorisation policy:/roles/commander/auth",
+                "  surveyor    2..2  needs resources [motion, video] and tasks [Explorer]",
+                "    policy policy:/roles/surveyor/mission",
+                "    authorisation policy:/roles/surveyor/auth",
+                "  aggregator  1..1  needs resources [communication] and tasks [Aggregator]",
+                "    policy policy:/roles/aggregator/mission",
+                "    authorisation policy:/roles/aggregator/auth",
+                "  hdetector   2..2  secondary to surveyor  needs resources [chemical, motion] and tasks [HazardDetector]",
+                "    policy policy:/roles/hdetector/mission",
+                "    authorisation policy:/roles/hdetector/auth",
+                "  relay       2..2  secondary to surveyor  needs resources [communication, motion] and tasks [Relay]",
+                "    policy policy:/roles/relay/mission",
+                "    authorisation policy:/roles/relay/auth",
+                "management tree:",
+                "  commander",
+                "    surveyor",
+                "      hdetector",
+                "      relay",
+                "    aggregator",
+                "colocation:",
+                "  relay runs in parallel with surveyor or hdetector",
+                "  surveyor and hdetector share a vehicle, one active at a time"), result.outLines());
+    }
+
+    @Test
+    void invalidInstance_listsEveryErrorAsFileLineCol_andExitStatusIs1() throws Exception {
+        String instance = writeRescueCopy(Files.readString(PROJECT.resolve("missions/rescue.instance.xml"))
+                .replace("<comTimeout>500</comTimeout>", "<comTimeout>soon</comTimeout>")
+                .replace("<minimal>1</minimal>", "<minimal>4</minimal>"));
+
+        Smc.Result result = smc.run("validate", "--repository", REPOSITORY, instance);
+
+        assertEquals(List.of(
+                instance + ":12:21: <comTimeout>: 'soon' is not an int; parameter 'comTimeout' is declared int in class 'Rescue'",
+                instance + ":25:22: <minimal>: minimal 4 is more than optimal 1; the minimal cardinality is at most "
+                        + "the reasonably-optimal one"), result.errLines());
+        assertEquals("", result.out());
+        assertEquals(1, result.status());
+    }
+
+    @Test
+    void errorInTheClassFile_namesTheClassFile() throws Exception {
+        String instance = writeRescueCopy(Files.readString(PROJECT.resolve("missions/rescue.instance.xml")));
+        Path classFile = dir.resolve("rescue.class.xml");
+        Files.writeString(classFile, Files.readString(classFile).replace("<manages>aggregator</manages>",
+                "<manages>aggregator</manages><manages>medic</manages>"));
+
+        Smc.Result result = smc.run("validate", "--repository", REPOSITORY, instance);
+
+        assertEquals(1, result.errLines().size(), result.err());
+        assertTrue(result.err().startsWith(classFile + ":26:42: "), result.err());
+        assertTrue(result.err().contains("<manages>: unknown role 'medic'"), result.err());
+        assertEquals(1, result.status());
+    }
+
+    @Test
+    void relativeInstanceName_resolvesAgainstTheWorkingDirectory() throws Exception {
+        writeRescueCopy(Files.readString(PROJECT.resolve("missions/rescue.instance.xml")));
+
+        Smc.Result result = smc.run("validate", "--repository", REPOSITORY, "rescue.instance.xml");
+
+        assertEquals(0, result.status(), result.err());
+        assertEquals("mission WoundedSoldier (class Rescue)", result.outLines().get(0));
+    }
+
+    @Test
+    void missingFile_isAUsageError_exitStatus2() {
+        Smc.Result result = smc.run("validate", "--repository", REPOSITORY, "nowhere.instance.xml");
+
+        assertEquals(2, result.status());
+        assertTrue(result.err().startsWith("smc validate: cannot read 'nowhere.instance.xml': no such file\n"), result.err());
+        assertEquals("", result.out());
+    }
+
+    @Test
+    void noRepository_isAUsageError_exitStatus2() throws Exception {
+        String instance = writeRescueCopy(Files.readString(PROJECT.resolve("missions/rescue.instance.xml")));
+
+        Smc.Result result = smc.run("validate", instance);
+
+        assertEquals(2, result.status());
+        assertTrue(result.err().startsWith("smc validate: no --repository given and no policies/ folder in the current "
+                + "directory; policy URIs need a repository to resolve in\n"), result.err());
+    }
+
+    @Test
+    void noInstance_isAUsageError_exitStatus2() {
+        Smc.Result result = smc.run("validate");
+
+        assertEquals(2, result.status());
+        assertTrue(result.err().startsWith("smc validate: Missing required parameter: 'INSTANCE.xml'"), result.err());
+    }
+
+    @Test
+    void help_explainsTheExitStatuses() {
+        Smc.Result result = smc.run("validate", "--help");
+
+        assertEquals(0, result.status());
+        assertTrue(result.out().startsWith("Usage: smc validate "), result.out());
+        assertTrue(result.out().contains("1   the instance or its class breaks a rule"), result.out());
+    }
+
+    @Test
+    void smcHelp_listsValidate() {
+        assertTrue(smc.run("--help").out().contains("validate"));
+    }
+}
