@@ -1,10 +1,5 @@
 package net.smc.core.router;
 
-import java.util.Arrays;
-import java.util.HashMap;
-import java.util.Iterator;
-import java.util.Map;
-import java.util.function.Consumer;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.MessageType;
 import org.slf4j.Logger;
@@ -37,9 +32,8 @@ import org.slf4j.LoggerFactory;
  * </ul>
  * Dispatch checks both: the receivers are {@code (type | source | pair) & ~excluded}, a few word
  * operations after one map lookup, whatever the number of registrations; an OR of bit sets is what
- * makes overlapping registrations of one subscriber count once. The tables are kept canonical: a
- * pair entry exists only where no aggregate covers it, an exclusion only where one does, and a
- * source row only while it holds something, so they stay as small as the registrations.
+ * makes overlapping registrations of one subscriber count once. {@link RoutingTables} keeps the
+ * tables canonical, so they stay as small as the registrations.
  *
  * <p>Dispatch delivers in slot order (the order in which subscribers first registered, slots of
  * removed subscribers being reused), so a run is deterministic. The receivers of a packet are
@@ -49,85 +43,36 @@ import org.slf4j.LoggerFactory;
  */
 public final class MessageRouter {
     private static final Logger log = LoggerFactory.getLogger(MessageRouter.class);
-    private static final int TYPES = MessageType.values().length;
 
-    /** Dispatch table, by type: subscribers registered for every packet of that type. */
-    private final long[][] byType = new long[TYPES][];
-    /** Dispatch table by source, and the exclusion table, one row per source. */
-    private final Map<String, SourceRow> bySource = new HashMap<>();
-    private final RoleSlots slots = new RoleSlots();
+    private final RoutingTables tables = new RoutingTables();
     private long dispatched;
     private long deliveries;
     private long unrouted;
     private long failures;
 
-    public MessageRouter() {
-        Arrays.fill(byType, Bits.EMPTY);
-    }
-
     /** Registers {@code subscriber} for every packet of {@code type}, from any source. */
     public void register(Subscriber subscriber, MessageType type) {
-        int slot = slots.acquire(check(subscriber));
-        int t = check(type).ordinal();
-        byType[t] = Bits.with(byType[t], slot);
-        forEachRow(row -> {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.without(row.excluded[t], slot);
-        });
+        tables.addType(check(subscriber), check(type).ordinal());
     }
 
     /** Registers {@code subscriber} for every packet from {@code source}, of any type. */
     public void register(Subscriber subscriber, String source) {
-        int slot = slots.acquire(check(subscriber));
-        SourceRow row = rowFor(check(source));
-        row.all = Bits.with(row.all, slot);
-        for (int t = 0; t < TYPES; t++) {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.without(row.excluded[t], slot);
-        }
+        tables.addSource(check(subscriber), check(source));
     }
 
     /** Registers {@code subscriber} for packets of {@code type} from {@code source}. */
     public void register(Subscriber subscriber, MessageType type, String source) {
-        int slot = slots.acquire(check(subscriber));
-        int t = check(type).ordinal();
-        SourceRow row = rowFor(check(source));
-        if (coveredByAggregate(slot, t, row)) {
-            row.excluded[t] = Bits.without(row.excluded[t], slot);
-        } else {
-            row.pairs[t] = Bits.with(row.pairs[t], slot);
-        }
-        dropIfEmpty(source, row);
+        tables.addPair(check(subscriber), check(type).ordinal(), check(source));
     }
 
     /** De-registers {@code subscriber} from every packet of {@code type}, whatever registration selected it. */
     public void deregister(Subscriber subscriber, MessageType type) {
-        int slot = slots.slotOf(check(subscriber));
-        int t = check(type).ordinal();
-        if (slot < 0) {
-            return;
-        }
-        byType[t] = Bits.without(byType[t], slot);
-        forEachRow(row -> {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.set(row.excluded[t], slot, Bits.has(row.all, slot));
-        });
+        tables.removeType(check(subscriber), check(type).ordinal());
     }
 
     /** De-registers {@code subscriber} from every packet from {@code source}, whatever registration selected it. */
     public void deregister(Subscriber subscriber, String source) {
-        int slot = slots.slotOf(check(subscriber));
-        check(source);
-        if (slot < 0 || !bySource.containsKey(source) && !registeredForAnyType(slot)) {
-            return;
-        }
-        SourceRow row = rowFor(source);
-        row.all = Bits.without(row.all, slot);
-        for (int t = 0; t < TYPES; t++) {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.set(row.excluded[t], slot, Bits.has(byType[t], slot));
-        }
-        dropIfEmpty(source, row);
+        tables.removeSource(check(subscriber), check(source));
     }
 
     /**
@@ -135,55 +80,17 @@ public final class MessageRouter {
      * aggregate registration this adds an entry to the exclusion table.
      */
     public void deregister(Subscriber subscriber, MessageType type, String source) {
-        int slot = slots.slotOf(check(subscriber));
-        int t = check(type).ordinal();
-        check(source);
-        if (slot < 0) {
-            return;
-        }
-        SourceRow row = bySource.get(source);
-        boolean covered = coveredByAggregate(slot, t, row);
-        if (row == null && !covered) {
-            return;
-        }
-        row = rowFor(source);
-        row.pairs[t] = Bits.without(row.pairs[t], slot);
-        row.excluded[t] = Bits.set(row.excluded[t], slot, covered);
-        dropIfEmpty(source, row);
+        tables.removePair(check(subscriber), check(type).ordinal(), check(source));
     }
 
     /** Removes every registration and exclusion of {@code subscriber} (a withdrawn role), and frees its slot. */
     public void deregisterAll(Subscriber subscriber) {
-        int slot = slots.slotOf(check(subscriber));
-        if (slot < 0) {
-            return;
-        }
-        for (int t = 0; t < TYPES; t++) {
-            byType[t] = Bits.without(byType[t], slot);
-        }
-        forEachRow(row -> {
-            row.all = Bits.without(row.all, slot);
-            for (int t = 0; t < TYPES; t++) {
-                row.pairs[t] = Bits.without(row.pairs[t], slot);
-                row.excluded[t] = Bits.without(row.excluded[t], slot);
-            }
-        });
-        slots.release(subscriber);
+        tables.removeAll(check(subscriber));
     }
 
     /** Whether a packet of {@code type} from {@code source} would reach {@code subscriber}. */
     public boolean receives(Subscriber subscriber, MessageType type, String source) {
-        int slot = slots.slotOf(check(subscriber));
-        int t = check(type).ordinal();
-        if (slot < 0) {
-            return false;
-        }
-        SourceRow row = bySource.get(check(source));
-        if (row == null) {
-            return Bits.has(byType[t], slot);
-        }
-        return (Bits.has(byType[t], slot) || Bits.has(row.all, slot) || Bits.has(row.pairs[t], slot))
-                && !Bits.has(row.excluded[t], slot);
+        return tables.receives(check(subscriber), check(type).ordinal(), check(source));
     }
 
     /**
@@ -194,9 +101,10 @@ public final class MessageRouter {
      */
     public int dispatch(Envelope envelope) {
         int t = envelope.body().type().ordinal();
-        Subscriber[] receivers = slots.snapshot();
-        long[] type = byType[t];
-        SourceRow row = bySource.get(envelope.sender());
+        // Read every array once: they are copy-on-write, so changes made by receivers cannot reach them.
+        Subscriber[] receivers = tables.slots.snapshot();
+        long[] type = tables.byType[t];
+        SourceRow row = tables.bySource.get(envelope.sender());
         long[] all = Bits.EMPTY;
         long[] pair = Bits.EMPTY;
         long[] excluded = Bits.EMPTY;
@@ -258,47 +166,12 @@ public final class MessageRouter {
 
     /** Subscribers with a slot. */
     public int subscribers() {
-        return slots.size();
+        return tables.slots.size();
     }
 
     /** Sources with a row (for tests: rows must not outlive their registrations). */
     int sourceRows() {
-        return bySource.size();
-    }
-
-    private boolean coveredByAggregate(int slot, int t, SourceRow row) {
-        return Bits.has(byType[t], slot) || row != null && Bits.has(row.all, slot);
-    }
-
-    private boolean registeredForAnyType(int slot) {
-        for (long[] bits : byType) {
-            if (Bits.has(bits, slot)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private SourceRow rowFor(String source) {
-        return bySource.computeIfAbsent(source, s -> new SourceRow());
-    }
-
-    private void dropIfEmpty(String source, SourceRow row) {
-        if (row.isEmpty()) {
-            bySource.remove(source);
-        }
-    }
-
-    /** Applies a change to every source row, dropping rows it leaves empty. */
-    private void forEachRow(Consumer<SourceRow> change) {
-        Iterator<SourceRow> it = bySource.values().iterator();
-        while (it.hasNext()) {
-            SourceRow row = it.next();
-            change.accept(row);
-            if (row.isEmpty()) {
-                it.remove();
-            }
-        }
+        return tables.bySource.size();
     }
 
     private static Subscriber check(Subscriber s) {
