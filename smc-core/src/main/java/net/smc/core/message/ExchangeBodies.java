@@ -1,0 +1,79 @@
+package net.smc.core.message;
+
+import java.util.List;
+
+/**
+ * Payloads of the messages of a running team: policies, heartbeats, acknowledgements, role events
+ * and remote invocations. Fields follow each other in record order.
+ */
+final class ExchangeBodies {
+    private ExchangeBodies() {
+    }
+
+    static final BodyCodec<PolicyRequest> POLICY_REQUEST = new BodyCodec<>(MessageType.POLICY_REQUEST,
+            PolicyRequest.class,
+            (m, w) -> {
+                w.string8(m.uri());
+                w.i32(m.version());
+            },
+            r -> new PolicyRequest(r.string8("uri", WireFormat.MAX_URI), r.i32("version")));
+
+    static final BodyCodec<PolicyReply> POLICY_REPLY = new BodyCodec<>(MessageType.POLICY_REPLY, PolicyReply.class,
+            (m, w) -> {
+                w.i64(m.inReplyTo());
+                w.string8(m.uri());
+                w.i32(m.version());
+                w.string16(m.text());
+            },
+            r -> new PolicyReply(r.i64("inReplyTo"), r.string8("uri", WireFormat.MAX_URI), r.i32("version"),
+                    r.string16("text", WireFormat.MAX_POLICY_TEXT)));
+
+    static final BodyCodec<Heartbeat> HEARTBEAT = new BodyCodec<>(MessageType.HEARTBEAT, Heartbeat.class,
+            (m, w) -> {
+                w.string8(m.role());
+                w.i64(m.epoch());
+                w.i32(m.state());
+            },
+            r -> new Heartbeat(r.name("role"), r.i64("epoch"), r.i32("state")));
+
+    static final BodyCodec<Ack> ACK = new BodyCodec<>(MessageType.ACK, Ack.class,
+            (m, w) -> w.i64(m.acked()),
+            r -> new Ack(r.i64("acked")));
+
+    static final BodyCodec<RoleEvent> ROLE_EVENT = new BodyCodec<>(MessageType.ROLE_EVENT, RoleEvent.class,
+            (m, w) -> {
+                w.string8(m.role());
+                w.string8(m.event());
+                ValueCodec.writeList(m.values(), w);
+            },
+            r -> new RoleEvent(r.name("role"), r.name("event"), ValueCodec.readList(r, "values")));
+
+    static final BodyCodec<Invocation> INVOCATION = new BodyCodec<>(MessageType.INVOCATION, Invocation.class,
+            (m, w) -> {
+                w.string8(m.role());
+                w.string8(m.operation());
+                ValueCodec.writeList(m.args(), w);
+            },
+            r -> new Invocation(r.name("role"), r.name("operation"), ValueCodec.readList(r, "args")));
+
+    static final BodyCodec<InvocationResult> INVOCATION_RESULT = new BodyCodec<>(MessageType.INVOCATION_RESULT,
+            InvocationResult.class,
+            (m, w) -> {
+                w.i64(m.inReplyTo());
+                w.bool(m.ok());
+                if (m.ok()) {
+                    ValueCodec.write(m.value(), w);
+                } else {
+                    w.string8(m.error());
+                }
+            },
+            r -> {
+                long inReplyTo = r.i64("inReplyTo");
+                return r.bool("ok")
+                        ? InvocationResult.ok(inReplyTo, ValueCodec.read(r, "value"))
+                        : InvocationResult.failed(inReplyTo, r.string8("error", WireFormat.MAX_TEXT));
+            });
+
+    static final List<BodyCodec<?>> ALL = List.of(POLICY_REQUEST, POLICY_REPLY, HEARTBEAT, ACK,
+            ROLE_EVENT, INVOCATION, INVOCATION_RESULT);
+}

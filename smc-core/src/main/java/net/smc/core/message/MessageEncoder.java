@@ -1,0 +1,127 @@
+package net.smc.core.message;
+
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Turns an {@link Envelope} into datagrams in the <a href="doc-files/wire-format.md">wire format</a>:
+ * into a caller's reusable buffer when it fits one datagram (heartbeats, acks: the hot path, which
+ * allocates nothing), or into as many fragment frames as its payload needs.
+ *
+ * <p>The payload is written first into the encoder's own buffer, behind room for the largest
+ * header, and the header is then put in front of it, so that a single datagram is one contiguous
+ * copy. An encoder holds that buffer (about 64 KiB) and is not thread-safe: one per cell, used on
+ * the cell's thread.
+ */
+public final class MessageEncoder {
+    /** Room for the largest header in front of the payload. */
+    private static final int HEADROOM = Header.length(WireFormat.MAX_SENDER);
+
+    private final byte[] scratch = new byte[HEADROOM + WireFormat.MAX_PAYLOAD];
+    private final ByteBuffer scratchView = ByteBuffer.wrap(scratch).asReadOnlyBuffer();
+    private final WireWriter writer = new WireWriter(scratch);
+    private final Fragmenter fragmenter = new Fragmenter();
+    private long messages;
+    private long datagrams;
+    private long fragmented;
+
+    /**
+     * Encodes a message that fits one datagram into {@code out}, from its position, and advances
+     * the position past it.
+     *
+     * @return the datagram's length
+     * @throws IllegalArgumentException if the message needs fragments (use {@link #encode(Envelope, DatagramSink)}),
+     *                                  if its payload is over {@link WireFormat#MAX_PAYLOAD}, or if {@code out}
+     *                                  has too little room
+     */
+    public int encode(Envelope envelope, ByteBuffer out) {
+        int senderBytes = Utf8.length(envelope.sender());
+        int payload = writePayload(envelope);
+        int headerLength = Header.length(senderBytes);
+        int size = headerLength + payload;
+        if (size > WireFormat.MAX_DATAGRAM) {
+            throw new IllegalArgumentException(describe(envelope) + ": its payload of " + payload
+                    + " bytes needs fragments (one datagram holds " + (WireFormat.MAX_DATAGRAM - headerLength)
+                    + " payload bytes for this sender); use encode(envelope, sink)");
+        }
+        if (out.remaining() < size) {
+            throw new IllegalArgumentException(describe(envelope) + ": the buffer has " + out.remaining()
+                    + " bytes left; the datagram needs " + size);
+        }
+        int start = HEADROOM - headerLength;
+        Header.write(scratch, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(), payload);
+        out.put(scratch, start, size);
+        messages++;
+        datagrams++;
+        return size;
+    }
+
+    /**
+     * Encodes a message of any size into one datagram, or into fragment frames when its payload
+     * exceeds one datagram, and hands each to {@code sink} in order.
+     *
+     * @return how many datagrams the sink received
+     * @throws IllegalArgumentException if the payload is over {@link WireFormat#MAX_PAYLOAD}
+     */
+    public int encode(Envelope envelope, DatagramSink sink) {
+        int senderBytes = Utf8.length(envelope.sender());
+        int payload = writePayload(envelope);
+        int headerLength = Header.length(senderBytes);
+        messages++;
+        if (headerLength + payload <= WireFormat.MAX_DATAGRAM) {
+            int start = HEADROOM - headerLength;
+            Header.write(scratch, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(), payload);
+            scratchView.clear().position(start).limit(start + headerLength + payload);
+            datagrams++;
+            sink.datagram(scratchView);
+            return 1;
+        }
+        fragmented++;
+        int n = fragmenter.emit(scratch, HEADROOM, payload, envelope.type(), envelope.sender(), senderBytes,
+                envelope.id(), sink);
+        datagrams += n;
+        return n;
+    }
+
+    /** Encodes a message into fresh arrays, one per datagram: for tests and occasional senders. */
+    public List<byte[]> datagrams(Envelope envelope) {
+        List<byte[]> out = new ArrayList<>(1);
+        encode(envelope, d -> {
+            byte[] b = new byte[d.remaining()];
+            d.get(b);
+            out.add(b);
+        });
+        return out;
+    }
+
+    /** Messages encoded so far. */
+    public long messages() {
+        return messages;
+    }
+
+    /** Datagrams written so far, fragment frames included. */
+    public long datagrams() {
+        return datagrams;
+    }
+
+    /** Messages that needed fragments. */
+    public long fragmentedMessages() {
+        return fragmented;
+    }
+
+    private int writePayload(Envelope envelope) {
+        writer.reset(HEADROOM, scratch.length);
+        try {
+            BodyCodec.of(envelope.type()).write(envelope.body(), writer);
+        } catch (WireWriter.Overflow e) {
+            throw new IllegalArgumentException(describe(envelope) + ": its payload exceeds " + WireFormat.MAX_PAYLOAD
+                    + " bytes, the limit of one message");
+        }
+        return writer.position() - HEADROOM;
+    }
+
+    private static String describe(Envelope e) {
+        return e.type() + " from '" + e.sender() + "' (id " + e.id() + ")";
+    }
+}

@@ -1,0 +1,108 @@
+package net.smc.core.message;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Payloads of the team-formation messages: discovery, capabilities, role assignment, status and
+ * leave. Fields follow each other in record order; an identity is written as its level and
+ * sequence only, since its mission is the message's own.
+ */
+final class TeamBodies {
+    private TeamBodies() {
+    }
+
+    static final BodyCodec<Discovery> DISCOVERY = new BodyCodec<>(MessageType.DISCOVERY, Discovery.class,
+            (m, w) -> {
+                w.string8(m.mission());
+                w.string8(m.role());
+                w.i32(m.level());
+                w.i64(m.epoch());
+            },
+            r -> new Discovery(r.name("mission"), r.name("role"), r.i32("level"), r.i64("epoch")));
+
+    static final BodyCodec<DiscoveryReply> DISCOVERY_REPLY = new BodyCodec<>(MessageType.DISCOVERY_REPLY,
+            DiscoveryReply.class,
+            (m, w) -> {
+                w.i64(m.inReplyTo());
+                w.string8(m.mission());
+                CapabilityCodec.writeSummary(m.summary(), w);
+            },
+            r -> new DiscoveryReply(r.i64("inReplyTo"), r.name("mission"), CapabilityCodec.readSummary(r)));
+
+    static final BodyCodec<CapabilityRequest> CAPABILITY_REQUEST = new BodyCodec<>(MessageType.CAPABILITY_REQUEST,
+            CapabilityRequest.class,
+            (m, w) -> w.string8(m.role()),
+            r -> new CapabilityRequest(r.name("role")));
+
+    static final BodyCodec<CapabilityReply> CAPABILITY_REPLY = new BodyCodec<>(MessageType.CAPABILITY_REPLY,
+            CapabilityReply.class,
+            (m, w) -> {
+                w.i64(m.inReplyTo());
+                CapabilityCodec.writeDescription(m.description(), w);
+            },
+            r -> new CapabilityReply(r.i64("inReplyTo"), CapabilityCodec.readDescription(r)));
+
+    static final BodyCodec<RoleAssignment> ROLE_ASSIGNMENT = new BodyCodec<>(MessageType.ROLE_ASSIGNMENT,
+            RoleAssignment.class,
+            (m, w) -> {
+                w.string8(m.mission());
+                w.string8(m.role());
+                w.i32(m.identity().level());
+                w.i32(m.identity().sequence());
+                w.string8(m.parent());
+                w.u8(m.policies().size());
+                for (PolicyRef p : m.policies()) {
+                    w.string8(p.uri());
+                    w.i32(p.version());
+                }
+            },
+            TeamBodies::readRoleAssignment);
+
+    static final BodyCodec<AssignmentResponse> ASSIGNMENT_RESPONSE = new BodyCodec<>(MessageType.ASSIGNMENT_RESPONSE,
+            AssignmentResponse.class,
+            (m, w) -> {
+                w.i64(m.inReplyTo());
+                w.string8(m.role());
+                w.bool(m.accepted());
+                w.string8(m.reason());
+            },
+            r -> new AssignmentResponse(r.i64("inReplyTo"), r.name("role"), r.bool("accepted"),
+                    r.string8("reason", WireFormat.MAX_TEXT)));
+
+    static final BodyCodec<Status> STATUS = new BodyCodec<>(MessageType.STATUS, Status.class,
+            (m, w) -> {
+                w.string8(m.mission());
+                w.i32(m.identity().level());
+                w.i32(m.identity().sequence());
+                w.string8(m.commander());
+                w.i64(m.epoch());
+                w.i32(m.teamSize());
+            },
+            r -> {
+                String mission = r.name("mission");
+                Identity identity = new Identity(mission, r.i32("identity.level"), r.i32("identity.sequence"));
+                return new Status(mission, identity, r.string8("commander", WireFormat.MAX_SENDER), r.i64("epoch"),
+                        r.i32("teamSize"));
+            });
+
+    static final BodyCodec<Leave> LEAVE = new BodyCodec<>(MessageType.LEAVE, Leave.class,
+            (m, w) -> w.string8(m.reason()),
+            r -> new Leave(r.string8("reason", WireFormat.MAX_TEXT)));
+
+    static final List<BodyCodec<?>> ALL = List.of(DISCOVERY, DISCOVERY_REPLY, CAPABILITY_REQUEST, CAPABILITY_REPLY,
+            ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, STATUS, LEAVE);
+
+    private static RoleAssignment readRoleAssignment(WireReader r) throws DecodeException {
+        String mission = r.name("mission");
+        String role = r.name("role");
+        Identity identity = new Identity(mission, r.i32("identity.level"), r.i32("identity.sequence"));
+        String parent = r.string8("parent", WireFormat.MAX_SENDER);
+        int n = r.count("policies", WireFormat.MAX_POLICIES, 5);
+        List<PolicyRef> policies = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            policies.add(new PolicyRef(r.string8("policy uri", WireFormat.MAX_URI), r.i32("policy version")));
+        }
+        return new RoleAssignment(mission, role, identity, parent, policies);
+    }
+}

@@ -1,0 +1,77 @@
+package net.smc.core.message;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.util.Arrays;
+import java.util.List;
+
+/** Test helpers around one encoder and one decoder on a virtual clock. */
+final class Codec {
+    final MessageEncoder encoder = new MessageEncoder();
+    long now;
+    final MessageDecoder decoder;
+
+    Codec() {
+        this(ReassemblySettings.DEFAULTS);
+    }
+
+    Codec(ReassemblySettings settings) {
+        decoder = new MessageDecoder(() -> now, settings);
+    }
+
+    List<byte[]> encode(Envelope e) {
+        return encoder.datagrams(e);
+    }
+
+    /** The single datagram of a message that fits one. */
+    byte[] datagram(Envelope e) {
+        List<byte[]> d = encode(e);
+        assertEquals(1, d.size(), () -> e + " takes " + d.size() + " datagrams");
+        return d.get(0);
+    }
+
+    DecodeResult decode(byte[] datagram) {
+        return decoder.decode(datagram);
+    }
+
+    /** Decodes a message's datagrams in order and returns the envelope the last one completes. */
+    Envelope roundTrip(Envelope e) {
+        List<byte[]> datagrams = encode(e);
+        for (int i = 0; i < datagrams.size() - 1; i++) {
+            assertInstanceOf(DecodeResult.FragmentPending.class, decode(datagrams.get(i)));
+        }
+        return decoded(decode(datagrams.get(datagrams.size() - 1)));
+    }
+
+    static Envelope decoded(DecodeResult r) {
+        if (r instanceof DecodeResult.Decoded d) {
+            return d.envelope();
+        }
+        return fail("expected a decoded message, got " + r);
+    }
+
+    static DecodeResult.Rejected rejected(DecodeResult r) {
+        if (r instanceof DecodeResult.Rejected rej) {
+            return rej;
+        }
+        return fail("expected a rejection, got " + r);
+    }
+
+    /**
+     * The invariants of any decode: never an internal error; a decoded single datagram re-encodes
+     * to exactly its bytes (the format has one encoding per message).
+     */
+    void checkInvariants(byte[] input, DecodeResult r) {
+        if (r instanceof DecodeResult.Rejected rej) {
+            assertNotEquals(RejectReason.INTERNAL_ERROR, rej.reason(), rej.detail());
+        } else if (r instanceof DecodeResult.Decoded d && input.length > 3 && (input[3] & 0xFF) != WireFormat.FRAGMENT_CODE) {
+            List<byte[]> again = encoder.datagrams(d.envelope());
+            if (again.size() != 1 || !Arrays.equals(again.get(0), input)) {
+                fail("decoded " + d.envelope() + " does not re-encode to its datagram");
+            }
+        }
+    }
+}

@@ -1,0 +1,141 @@
+package net.smc.core.message;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.math.BigDecimal;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import net.smc.core.capability.CapabilitySummary;
+import org.junit.jupiter.api.Test;
+
+/** Each record refuses what the wire cannot carry, with a message naming the field, the value and the rule. */
+class MessageValidationTest {
+
+    private static String refusal(Runnable construct) {
+        return assertThrows(IllegalArgumentException.class, construct::run).getMessage();
+    }
+
+    @Test
+    void envelope_refusesASenderOver64Bytes() {
+        assertEquals("Envelope.sender 'ééééééééééééééééééééééééééééééééé' is 66 UTF-8 bytes; a vehicle id "
+                + "must be 1 to 64 bytes", refusal(() -> new Envelope("é".repeat(33), 1, new Ack(1))));
+    }
+
+    @Test
+    void envelope_refusesAnEmptySender() {
+        assertEquals("Envelope.sender '' is 0 UTF-8 bytes; a vehicle id must be 1 to 64 bytes",
+                refusal(() -> new Envelope("", 1, new Ack(1))));
+    }
+
+    @Test
+    void envelope_refusesAMissingBody() {
+        assertEquals("Envelope.body is null; it is required", refusal(() -> new Envelope("u", 1, null)));
+    }
+
+    @Test
+    void names_refuseUnpairedSurrogates() {
+        assertEquals("Heartbeat.role 'a\uD83D' holds an unpaired surrogate; it must be valid Unicode text",
+                refusal(() -> new Heartbeat("a\uD83D", 1, 1)));
+    }
+
+    @Test
+    void names_refuseNull() {
+        assertEquals("Discovery.mission is null; a name must be 1 to 64 UTF-8 bytes",
+                refusal(() -> new Discovery(null, "r", 0, 0)));
+    }
+
+    @Test
+    void heartbeat_refusesANegativeEpoch() {
+        assertEquals("Heartbeat.epoch is -3; it must be 0 or more", refusal(() -> new Heartbeat("r", -3, 0)));
+    }
+
+    @Test
+    void roleAssignment_refusesAnIdentityOfAnotherMission() {
+        assertEquals("RoleAssignment.identity [other|1|1] is for mission 'other'; it must be for the assignment's "
+                + "mission 'rescue'", refusal(() -> new RoleAssignment("rescue", "relay", new Identity("other", 1, 1),
+                "uav1", List.of())));
+    }
+
+    @Test
+    void roleAssignment_refusesMoreThan32Policies() {
+        List<PolicyRef> refs = new ArrayList<>();
+        for (int i = 0; i < 33; i++) {
+            refs.add(new PolicyRef("p" + i, 1));
+        }
+        assertEquals("RoleAssignment.policies has 33 elements; at most 32 are allowed",
+                refusal(() -> new RoleAssignment("m", "r", new Identity("m", 1, 1), "uav1", refs)));
+    }
+
+    @Test
+    void policyReply_refusesATextOverItsLimit() {
+        String text = Samples.ascii(WireFormat.MAX_POLICY_TEXT + 1);
+        assertEquals("PolicyReply.text 'abcdefghijklmnopqrstuvwxyzabcdefghijklmn...' is 65001 UTF-8 bytes; a policy "
+                + "text must be 0 to 65000 bytes", refusal(() -> new PolicyReply(1, "u", 1, text)));
+    }
+
+    @Test
+    void values_refuseAJavaTypeThatIsNotAPonderTalkValue() {
+        assertEquals("RoleEvent.values[1] is a java.lang.Integer (7); a PonderTalk value must be a String, "
+                + "BigDecimal, Boolean, null or a List of those",
+                refusal(() -> new RoleEvent("r", "e", List.of("x", 7))));
+    }
+
+    @Test
+    void values_refuseListsNestedDeeperThanFour() {
+        assertEquals("Invocation.args[0][0][0][0][0] is a list nested 5 deep; PonderTalk values nest at most 4 deep",
+                refusal(() -> new Invocation("r", "o", List.of(Samples.nested(5, "x")))));
+    }
+
+    @Test
+    void values_refuseANumberOver64Bytes() {
+        BigDecimal huge = new BigDecimal(java.math.BigInteger.TWO.pow(512));
+        assertEquals("RoleEvent.values[0] 13407807929942597099... needs 65 bytes; a number must fit 64 bytes "
+                + "(about 150 digits)", refusal(() -> new RoleEvent("r", "e", List.of(huge))));
+    }
+
+    @Test
+    void values_acceptNilElementsAndAreCopied() {
+        List<Object> values = new ArrayList<>(Arrays.asList("a", null));
+        RoleEvent e = new RoleEvent("r", "e", values);
+        values.set(0, "changed");
+        assertEquals(Arrays.asList("a", null), e.values());
+        assertThrows(UnsupportedOperationException.class, () -> e.values().add("x"));
+    }
+
+    @Test
+    void invocationResult_refusesAnErrorOnSuccess() {
+        assertEquals("InvocationResult.error is 'oops' but ok is true; a successful result has a null error",
+                refusal(() -> new InvocationResult(1, true, null, "oops")));
+    }
+
+    @Test
+    void invocationResult_refusesAFailureWithoutError() {
+        assertEquals("InvocationResult.error '' is 0 UTF-8 bytes; the error of a failed result must be 1 to 255 bytes",
+                refusal(() -> InvocationResult.failed(1, "")));
+    }
+
+    @Test
+    void discoveryReply_refusesASummaryWithTooManyResources() {
+        java.util.TreeSet<String> resources = new java.util.TreeSet<>();
+        for (int i = 0; i < 65; i++) {
+            resources.add("r" + i);
+        }
+        assertEquals("DiscoveryReply.summary.resources has 65 elements; at most 64 are allowed",
+                refusal(() -> new DiscoveryReply(1, "m", new CapabilitySummary("uav1", resources, resources))));
+    }
+
+    @Test
+    void capabilityReply_refusesAnEmptyTaskName() {
+        assertEquals("CapabilityReply.description.tasks[0].task '' is 0 UTF-8 bytes; a name must be 1 to 64 bytes",
+                refusal(() -> new CapabilityReply(1, net.smc.core.capability.CapabilityDescription.of("uav1",
+                        java.util.Set.of(), List.of(net.smc.core.capability.TaskDescription.empty(""))))));
+    }
+
+    @Test
+    void status_refusesANegativeTeamSize() {
+        assertEquals("Status.teamSize is -1; it must be 0 or more",
+                refusal(() -> new Status("m", new Identity("m", 0, 0), "uav1", 0, -1)));
+    }
+}

@@ -1,0 +1,158 @@
+package net.smc.core.message;
+
+import java.math.BigDecimal;
+import java.math.BigInteger;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Set;
+import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.capability.EventDescription;
+import net.smc.core.capability.OperationDescription;
+import net.smc.core.capability.TaskDescription;
+
+/** Valid messages of every type, ordinary and at their limits, shared by the codec tests. */
+final class Samples {
+    private Samples() {
+    }
+
+    static final Identity IDENTITY = new Identity("rescue", 1, 4);
+
+    static CapabilitySummary summary() {
+        return new CapabilitySummary("uav2", new java.util.TreeSet<>(Set.of("motion", "video", "infrared")),
+                new java.util.TreeSet<>(Set.of("Explorer", "Relay")));
+    }
+
+    /** A description with {@code tasks} tasks of {@code ops} operations and {@code ops} events each. */
+    static CapabilityDescription description(int tasks, int ops) {
+        List<TaskDescription> list = new ArrayList<>();
+        for (int t = 0; t < tasks; t++) {
+            List<OperationDescription> operations = new ArrayList<>();
+            List<EventDescription> events = new ArrayList<>();
+            for (int o = 0; o < ops; o++) {
+                operations.add(new OperationDescription("moveTo" + o, List.of("double", "double", "String")));
+                events.add(new EventDescription("reached" + o, List.of(new EventDescription.Attribute("x", "double"),
+                        new EventDescription.Attribute("y", "double"))));
+            }
+            list.add(new TaskDescription("Task" + t, operations, events));
+        }
+        list.add(TaskDescription.empty("Idle"));
+        return CapabilityDescription.of("uav2", Set.of("motion", "video", "communication"), list);
+    }
+
+    /** ASCII text of exactly {@code bytes} bytes. */
+    static String ascii(int bytes) {
+        char[] c = new char[bytes];
+        for (int i = 0; i < bytes; i++) {
+            c[i] = (char) ('a' + i % 26);
+        }
+        return new String(c);
+    }
+
+    /** Text of exactly {@code bytes} UTF-8 bytes mixing 1-, 2-, 3- and 4-byte characters. */
+    static String mixed(int bytes) {
+        StringBuilder sb = new StringBuilder();
+        String[] pieces = {"a", "é", "€", "\uD83D\uDE81"};  // 1, 2, 3, 4 bytes (the last: a helicopter)
+        int n = 0;
+        for (int i = 0; n < bytes; i++) {
+            String p = pieces[i % 4];
+            int len = Utf8.length(p);
+            if (n + len > bytes) {
+                p = "z";
+                len = 1;
+            }
+            sb.append(p);
+            n += len;
+        }
+        return sb.toString();
+    }
+
+    /** A policy text of {@code bytes} bytes that looks like PonderTalk. */
+    static String policyText(int bytes) {
+        String line = "p := root/factory/ecapolicy create. p event: /event/newUAV; active: true.\n";
+        StringBuilder sb = new StringBuilder();
+        while (sb.length() + line.length() <= bytes) {
+            sb.append(line);
+        }
+        sb.append(ascii(bytes - sb.length()));
+        return sb.toString();
+    }
+
+    /** A list nested {@code depth} deep: {@code [[[x]]]} for 3. */
+    static List<Object> nested(int depth, Object leaf) {
+        List<Object> v = Arrays.asList(leaf);
+        for (int i = 1; i < depth; i++) {
+            v = Arrays.asList(v, null);
+        }
+        return v;
+    }
+
+    /** The largest number a value may carry: 64 bytes of two's complement. */
+    static BigDecimal largestNumber() {
+        return new BigDecimal(BigInteger.TWO.pow(511).subtract(BigInteger.ONE), -7);
+    }
+
+    /** Messages of every type, small and ordinary. */
+    static List<Message> ordinary() {
+        List<Object> values = Arrays.asList("found", new BigDecimal("12.50"), Boolean.TRUE, null,
+                List.of(new BigDecimal("-3"), "x"));
+        return List.of(
+                new Discovery("rescue", "commander", 0, 1),
+                new DiscoveryReply(11, "rescue", summary()),
+                new CapabilityRequest("relay"),
+                new CapabilityReply(12, description(2, 2)),
+                new RoleAssignment("rescue", "relay", IDENTITY, "uav1",
+                        List.of(new PolicyRef("policy:/roles/relay", 3), new PolicyRef("policy:/roles/common", 1))),
+                new AssignmentResponse(13, "relay", true, ""),
+                new AssignmentResponse(14, "medic", false, "no video resource"),
+                new PolicyRequest("policy:/roles/relay", 3),
+                new PolicyReply(15, "policy:/roles/relay", 3, "p := root/factory/ecapolicy create."),
+                new Heartbeat("relay", 42, 1),
+                new Ack(Long.MIN_VALUE),
+                new RoleEvent("explorer", "soldierFound", values),
+                new Invocation("medic", "moveTo:y:", List.of(new BigDecimal("10.5"), new BigDecimal("-2"))),
+                InvocationResult.ok(16, List.of("done", Boolean.FALSE)),
+                InvocationResult.ok(17, null),
+                InvocationResult.failed(18, "no such operation"),
+                new Leave("shutting down"),
+                new Status("rescue", IDENTITY, "uav1", 7, 5));
+    }
+
+    /** Messages at the limits of their fields (each still fits one datagram with a short sender). */
+    static List<Message> boundaries() {
+        String name64 = ascii(64);
+        String nameMixed = mixed(64);
+        List<Object> sixtyFour = new ArrayList<>();
+        for (int i = 0; i < 64; i++) {
+            sixtyFour.add(i % 2 == 0 ? null : new BigDecimal(i));
+        }
+        return List.of(
+                new Discovery(name64, nameMixed, Integer.MAX_VALUE, Long.MAX_VALUE),
+                new Discovery("m", "r", 0, 0),
+                new CapabilityRequest(nameMixed),
+                new RoleAssignment(nameMixed, name64, new Identity(nameMixed, Integer.MAX_VALUE, Integer.MAX_VALUE),
+                        ascii(64), List.of()),
+                new AssignmentResponse(Long.MAX_VALUE, "r", false, mixed(255)),
+                new PolicyRequest(ascii(255), Integer.MAX_VALUE),
+                new PolicyReply(-1, "u", 0, ""),
+                new Heartbeat(name64, 0, Integer.MAX_VALUE),
+                new Heartbeat("r", Long.MAX_VALUE, 0),
+                new Ack(Long.MAX_VALUE),
+                new RoleEvent("r", "e", List.of()),
+                new RoleEvent("r", "e", sixtyFour),
+                new RoleEvent("r", "e", List.of(nested(4, "deep"), "", mixed(300))),
+                new Invocation("r", "o", List.of(largestNumber(), largestNumber().negate(), BigDecimal.ZERO,
+                        new BigDecimal("1E+2147483647"), new BigDecimal("1E-2147483647"))),
+                InvocationResult.ok(0, mixed(1000)),
+                InvocationResult.failed(0, ascii(255)),
+                new Leave(""),
+                new Leave(mixed(255)),
+                new Status(name64, new Identity(name64, 0, 0), ascii(64), Long.MAX_VALUE, Integer.MAX_VALUE));
+    }
+
+    /** Senders at the limits: the shortest, and 64 bytes in 1-, 2- and 4-byte characters. */
+    static List<String> senders() {
+        return List.of("u", ascii(64), "é".repeat(32), "\uD83D\uDE81".repeat(16));
+    }
+}

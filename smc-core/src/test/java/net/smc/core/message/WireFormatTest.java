@@ -1,0 +1,46 @@
+package net.smc.core.message;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.HexFormat;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** Pins the bytes of the format, so that a change to it is a deliberate one (and a new version). */
+class WireFormatTest {
+    private final Codec codec = new Codec();
+
+    private static String hex(byte[] b) {
+        return HexFormat.ofDelimiter(" ").formatHex(b);
+    }
+
+    @Test
+    void heartbeat_isHeaderThenRoleEpochState() {
+        byte[] d = codec.datagram(new Envelope("uav1", 7, new Heartbeat("relay", 42, 1)));
+        assertEquals("53 4d 01 09 04 75 61 76 31 00 00 00 00 00 00 00 07 00 12 "   // magic, version, type, sender, id, length
+                + "05 72 65 6c 61 79 00 00 00 00 00 00 00 2a 00 00 00 01", hex(d));  // role, epoch, state
+    }
+
+    @Test
+    void roleEvent_valuesAreTagged() {
+        byte[] d = codec.datagram(new Envelope("u", 1, new RoleEvent("r", "e", java.util.Arrays.asList(
+                null, false, true, "hi", new java.math.BigDecimal("-1.5"), List.of()))));
+        String payload = hex(d).substring(hex(d).indexOf(" 01 72"));  // after the payload length
+        assertEquals(" 01 72 01 65 06 00 01 02 03 00 02 68 69 04 00 00 00 01 01 f1 05 00", payload);
+    }
+
+    @Test
+    void fragments_carryTypeIndexCountAndTotal() {
+        Envelope e = new Envelope("u", 1, new PolicyReply(1, "u", 1, Samples.ascii(2_000)));
+        List<byte[]> d = codec.encode(e);
+        assertEquals(2, d.size());
+        int total = 8 + 2 + 4 + 2 + 2_000;
+        // header: magic, version, type 0xFF, sender "u", id 1, payload length = 9 + chunk of ceil(2016 / 2) bytes
+        assertEquals("53 4d 01 ff 01 75 00 00 00 00 00 00 00 01 03 f9", hex(d.get(0)).substring(0, 47));
+        // fragment header: type POLICY_REPLY, index 1, count 2, total 2016
+        assertEquals("08 00 01 00 02 00 00 07 e0", hex(d.get(1)).substring(48, 48 + 26));
+        assertEquals(total, 0x7e0);
+        assertEquals(16 + 9 + 1_008, d.get(0).length);
+        assertEquals(16 + 9 + 1_008, d.get(1).length);
+    }
+}
