@@ -2,6 +2,8 @@ package net.smc.gradle
 
 import org.gradle.api.DefaultTask
 import org.gradle.api.file.FileCollection
+import org.gradle.api.tasks.Classpath
+import org.gradle.api.tasks.InputFiles
 import org.gradle.api.tasks.TaskAction
 
 /**
@@ -13,9 +15,14 @@ import org.gradle.api.tasks.TaskAction
  * others from running.
  */
 class JUnitConsole extends DefaultTask {
-    /** Test runtime classpath; must hold junit-platform-console. */
+    /**
+     * Test runtime classpath; must hold junit-platform-console. Declared as an input so that Gradle
+     * builds what it holds (the jars of the modules under test) before the tests run.
+     */
+    @Classpath
     FileCollection classpath
     /** Directories scanned for test classes. */
+    @InputFiles
     FileCollection testClassesDirs
     File reportsDir
     List<String> jvmArgs = []

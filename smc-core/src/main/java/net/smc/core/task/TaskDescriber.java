@@ -3,7 +3,6 @@ package net.smc.core.task;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.lang.reflect.Parameter;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.LinkedHashSet;
@@ -11,6 +10,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
+import net.smc.policy.runtime.ManagedClass;
 import net.smc.core.capability.EventDescription;
 import net.smc.core.capability.OperationDescription;
 import net.smc.core.capability.TaskDescription;
@@ -66,7 +66,7 @@ public final class TaskDescriber {
         String task = taskClass.getSimpleName();
         Set<OperationDescription> operations = new LinkedHashSet<>();
         TreeMap<String, EventDescription> events = new TreeMap<>();
-        for (Class<?> iface : interfacesOf(taskClass)) {
+        for (Class<?> iface : ManagedClass.interfacesOf(taskClass)) {
             TaskInterface marker = iface.getAnnotation(TaskInterface.class);
             if (marker == null) {
                 continue;
@@ -91,22 +91,6 @@ public final class TaskDescriber {
         sorted.sort(Comparator.comparing(OperationDescription::name)
                 .thenComparing(o -> String.join(",", o.argumentTypes())));
         return new TaskDescription(task, sorted, List.copyOf(events.values()));
-    }
-
-    /** Every interface the class is an instance of, nearest first: declared by the class, its superclasses, then theirs. */
-    static Set<Class<?>> interfacesOf(Class<?> type) {
-        Set<Class<?>> found = new LinkedHashSet<>();
-        ArrayDeque<Class<?>> queue = new ArrayDeque<>();
-        for (Class<?> k = type; k != null; k = k.getSuperclass()) {
-            queue.addAll(List.of(k.getInterfaces()));
-        }
-        while (!queue.isEmpty()) {
-            Class<?> i = queue.removeFirst();
-            if (found.add(i)) {
-                queue.addAll(List.of(i.getInterfaces()));
-            }
-        }
-        return found;
     }
 
     private static List<String> typeNames(Method m) {

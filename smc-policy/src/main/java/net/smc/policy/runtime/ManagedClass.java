@@ -176,7 +176,7 @@ public final class ManagedClass {
     }
 
     /** Every interface a class implements, directly or through superclasses and superinterfaces, nearest first. */
-    private static Set<Class<?>> interfacesOf(Class<?> type) {
+    public static Set<Class<?>> interfacesOf(Class<?> type) {
         Set<Class<?>> found = new LinkedHashSet<>();
         ArrayDeque<Class<?>> queue = new ArrayDeque<>();
         for (Class<?> k = type; k != null; k = k.getSuperclass()) {
