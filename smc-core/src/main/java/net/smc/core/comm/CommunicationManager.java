@@ -34,7 +34,8 @@ import net.smc.core.transport.Transport;
  * SimulationScheduler sim = new SimulationScheduler();
  * InMemoryNetwork net = new InMemoryNetwork(sim, 7);
  * MessageRouter router = new MessageRouter();
- * router.register(env -> System.out.println(env), MessageType.ROLE_ASSIGNMENT);
+ * List<Envelope> assignments = new ArrayList<>();
+ * router.register(assignments::add, MessageType.ROLE_ASSIGNMENT);
  * CommunicationManager a = CommunicationManager.builder("uav-a", net.attach(Address.loopback(4001)), sim, sim)
  *         .random(new SplittableRandom(1)).router(new MessageRouter()).build();
  * CommunicationManager b = CommunicationManager.builder("uav-b", net.attach(Address.loopback(4002)), sim, sim)
@@ -192,9 +193,17 @@ public final class CommunicationManager {
             sender.acknowledged(from, ack);
             return;
         }
-        if (critical.contains(body.type()) && !sender.received(from, envelope)) {
+        if (!critical.contains(body.type())) {
+            dispatch(envelope);
             return;
         }
+        if (sender.admit(envelope)) {
+            dispatch(envelope);
+        }
+        sender.acknowledge(from, envelope);
+    }
+
+    private void dispatch(Envelope envelope) {
         counters.dispatched++;
         router.dispatch(envelope);
     }

@@ -100,22 +100,31 @@ public final class MessageSender {
     }
 
     /**
-     * Handles a critical message that arrived from {@code from}: acknowledges it (again, if it is a
-     * duplicate) and tells whether the application should have it.
+     * Checks a critical message that arrived against the duplicate window.
      *
-     * @return true the first time this {@code (sender, id)} arrives within the duplicate window
+     * @return true the first time this {@code (sender, id)} arrives within the window: the
+     *         application should have it; false for a duplicate, which is counted
      */
-    boolean received(Address from, Envelope envelope) {
-        if (!stopped) {
-            wire.send(from, wire.encode(new Envelope(self, ids.next(), new Ack(envelope.id()))));
-            counters.acksSent++;
-        }
+    boolean admit(Envelope envelope) {
         if (window.firstSeen(envelope.sender(), envelope.id(), clock.nowMillis())) {
             counters.delivered++;
             return true;
         }
         counters.duplicates++;
         return false;
+    }
+
+    /**
+     * Acknowledges a critical message to the address it came from, every time it arrives: if an
+     * earlier Ack was lost, this one settles the sender. Called after the message was handed to
+     * the application, so that "delivered" at the sender means the application had it.
+     */
+    void acknowledge(Address from, Envelope envelope) {
+        if (stopped) {
+            return;
+        }
+        wire.send(from, wire.encode(new Envelope(self, ids.next(), new Ack(envelope.id()))));
+        counters.acksSent++;
     }
 
     /**
