@@ -1,0 +1,302 @@
+package net.smc.core.comm;
+
+import java.util.Objects;
+import java.util.random.RandomGenerator;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import net.smc.core.message.Ack;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Message;
+import net.smc.core.message.ReassemblySettings;
+import net.smc.core.router.MessageRouter;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Scheduler;
+import net.smc.core.transport.Transport;
+
+/**
+ * The Communication-Manager of the paper (section IV-A): a cell's single point of sending and
+ * receiving. Ordinary traffic goes out connectionless (one datagram, or its fragments, once);
+ * messages of the {@link CriticalTypes critical types} go through the {@link MessageSender}, which
+ * acknowledges, retransmits and reports failures. Every message leaves with this cell's vehicle id
+ * as sender and a fresh id, increasing per cell.
+ *
+ * <p>Incoming datagrams are decoded (a bad one is counted and logged at debug level, never thrown),
+ * Acks are consumed, critical messages are acknowledged and de-duplicated, and each application
+ * message is handed once to the {@link MessageRouter}. Connectionless messages keep UDP's
+ * semantics: one may be lost or, if the network duplicates it, dispatched twice.
+ *
+ * <p>Sans-IO: it uses only the given clock, scheduler and transport, and must be called on the
+ * cell's thread (in deployment, submit to the cell's executor). A pair of simulated cells:
+ * <pre>{@code
+ * SimulationScheduler sim = new SimulationScheduler();
+ * InMemoryNetwork net = new InMemoryNetwork(sim, 7);
+ * MessageRouter router = new MessageRouter();
+ * List<Envelope> assignments = new ArrayList<>();
+ * router.register(assignments::add, MessageType.ROLE_ASSIGNMENT);
+ * CommunicationManager a = CommunicationManager.builder("uav-a", net.attach(Address.loopback(4001)), sim, sim)
+ *         .random(new SplittableRandom(1)).router(new MessageRouter()).build();
+ * CommunicationManager b = CommunicationManager.builder("uav-b", net.attach(Address.loopback(4002)), sim, sim)
+ *         .random(new SplittableRandom(2)).router(router).build();
+ * a.start(); b.start();
+ * a.send(Address.loopback(4002), assignment, listener);   sim.runUntilIdle(10_000);
+ * }</pre>
+ * See <a href="doc-files/reliable-delivery.md">the reliable-delivery design note</a>.
+ */
+public final class CommunicationManager {
+    private static final Logger log = LoggerFactory.getLogger(CommunicationManager.class);
+
+    private final String vehicleId;
+    private final Transport transport;
+    private final MessageRouter router;
+    private final CriticalTypes critical;
+    private final DeliveryListener defaultListener;
+    private final CommCounters counters = new CommCounters();
+    private final Wire wire;
+    private final IdSource ids;
+    private final MessageSender sender;
+    private boolean started;
+    private boolean stopped;
+
+    private CommunicationManager(Builder b) {
+        this.vehicleId = b.vehicleId;
+        this.transport = b.transport;
+        this.router = b.router;
+        this.critical = b.critical;
+        this.defaultListener = b.listener;
+        this.wire = new Wire(b.transport, b.clock, b.reassembly, counters);
+        this.ids = new IdSource(b.clock);
+        this.sender = new MessageSender(b.vehicleId, b.clock, b.scheduler, b.random, b.settings, wire, ids);
+    }
+
+    /**
+     * A builder for the cell {@code vehicleId} on {@code transport}, with its clock and scheduler;
+     * the random source and the router are required too.
+     */
+    public static Builder builder(String vehicleId, Transport transport, Clock clock, Scheduler scheduler) {
+        return new Builder(vehicleId, transport, clock, scheduler);
+    }
+
+    /** Registers as the transport's receiver: from now on datagrams are decoded and dispatched. */
+    public void start() {
+        if (started) {
+            throw new IllegalStateException("communication manager of '" + vehicleId + "' is already started");
+        }
+        started = true;
+        transport.setReceiver(this::onDatagram);
+    }
+
+    /**
+     * Stops the Message-Sender (outstanding critical messages are reported failed, as
+     * {@link FailureReason#STOPPED}) and ignores what arrives later. The transport belongs to the
+     * caller, who closes it.
+     */
+    public void stop() {
+        stopped = true;
+        sender.stop();
+    }
+
+    /**
+     * Sends {@code message} to {@code to}: reliably when its type is critical (the outcome goes to
+     * the builder's default listener), connectionless otherwise.
+     *
+     * @return the message's id
+     */
+    public long send(Address to, Message message) {
+        Objects.requireNonNull(to, "to");
+        Objects.requireNonNull(message, "message");
+        if (critical.contains(message.type())) {
+            return sender.send(to, message, defaultListener);
+        }
+        checkRunning(message);
+        long id = ids.next();
+        wire.send(to, wire.encode(new Envelope(vehicleId, id, message)));
+        counters.unicasts++;
+        return id;
+    }
+
+    /**
+     * Sends a critical message to {@code to} reliably; {@code listener} learns whether it was
+     * acknowledged or given up on.
+     *
+     * @return the message's id, as named by the listener's calls
+     * @throws IllegalArgumentException when the type is not critical: the receiver would not acknowledge it
+     */
+    public long send(Address to, Message message, DeliveryListener listener) {
+        Objects.requireNonNull(to, "to");
+        Objects.requireNonNull(message, "message");
+        Objects.requireNonNull(listener, "listener");
+        if (!critical.contains(message.type())) {
+            throw new IllegalArgumentException(message.type() + " to " + to + " cannot be sent reliably: it is not"
+                    + " a critical type, so the receiver would never acknowledge it; critical types are "
+                    + critical.types() + " (the same set on every cell)");
+        }
+        return sender.send(to, message, listener);
+    }
+
+    /**
+     * Broadcasts {@code message} to every cell in reach, connectionless.
+     *
+     * @return the message's id
+     * @throws IllegalArgumentException when the type is critical: a broadcast has no one receiver to acknowledge it
+     */
+    public long broadcast(Message message) {
+        Objects.requireNonNull(message, "message");
+        if (critical.contains(message.type())) {
+            throw new IllegalArgumentException(message.type() + " cannot be broadcast: it is a critical type and"
+                    + " needs one receiver to acknowledge it; send it to each cell instead");
+        }
+        checkRunning(message);
+        long id = ids.next();
+        wire.broadcast(wire.encode(new Envelope(vehicleId, id, message)));
+        counters.broadcasts++;
+        return id;
+    }
+
+    /** The vehicle id every message of this cell carries as its sender. */
+    public String vehicleId() {
+        return vehicleId;
+    }
+
+    /** Where other cells reach this one. */
+    public Address localAddress() {
+        return transport.localAddress();
+    }
+
+    public CriticalTypes critical() {
+        return critical;
+    }
+
+    /** The reliable half: its counters, settings and outstanding messages. */
+    public MessageSender sender() {
+        return sender;
+    }
+
+    public CommCounters counters() {
+        return counters;
+    }
+
+    /** One datagram from the transport, on the cell's thread. */
+    void onDatagram(Address from, byte[] data) {
+        if (stopped) {
+            return;
+        }
+        Envelope envelope = wire.decode(from, data);
+        if (envelope == null) {
+            return;
+        }
+        Message body = envelope.body();
+        if (body instanceof Ack ack) {
+            counters.acksReceived++;
+            sender.acknowledged(from, ack);
+            return;
+        }
+        if (!critical.contains(body.type())) {
+            dispatch(envelope);
+            return;
+        }
+        if (sender.admit(envelope)) {
+            dispatch(envelope);
+        }
+        sender.acknowledge(from, envelope);
+    }
+
+    private void dispatch(Envelope envelope) {
+        counters.dispatched++;
+        router.dispatch(envelope);
+    }
+
+    private void checkRunning(Message message) {
+        if (stopped) {
+            throw new IllegalStateException("communication manager of '" + vehicleId + "' is stopped; cannot send "
+                    + message.type());
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "CommunicationManager[" + vehicleId + " at " + transport.localAddress() + "]";
+    }
+
+    /** Collects what a {@link CommunicationManager} needs; each setter checks its argument. */
+    public static final class Builder {
+        private final String vehicleId;
+        private final Transport transport;
+        private final Clock clock;
+        private final Scheduler scheduler;
+        private RandomGenerator random;
+        private MessageRouter router;
+        private SenderSettings settings = SenderSettings.DEFAULTS;
+        private CriticalTypes critical = CriticalTypes.DEFAULT;
+        private ReassemblySettings reassembly = ReassemblySettings.DEFAULTS;
+        private DeliveryListener listener;
+
+        private Builder(String vehicleId, Transport transport, Clock clock, Scheduler scheduler) {
+            if (vehicleId == null || vehicleId.isEmpty()) {
+                throw new IllegalArgumentException("vehicle id is " + (vehicleId == null ? "null" : "empty")
+                        + "; every message needs its sender's vehicle id");
+            }
+            this.vehicleId = vehicleId;
+            this.transport = Objects.requireNonNull(transport, "transport");
+            this.clock = Objects.requireNonNull(clock, "clock");
+            this.scheduler = Objects.requireNonNull(scheduler, "scheduler");
+            this.listener = new LoggingListener(vehicleId);
+        }
+
+        /** The random source of the retransmission jitter (seeded in simulation). Required. */
+        public Builder random(RandomGenerator random) {
+            this.random = Objects.requireNonNull(random, "random");
+            return this;
+        }
+
+        /** The Message-Router that receives every application message. Required. */
+        public Builder router(MessageRouter router) {
+            this.router = Objects.requireNonNull(router, "router");
+            return this;
+        }
+
+        /** Retransmission and duplicate-window settings; {@link SenderSettings#DEFAULTS} if not set. */
+        public Builder settings(SenderSettings settings) {
+            this.settings = Objects.requireNonNull(settings, "settings");
+            return this;
+        }
+
+        /** The critical types; {@link CriticalTypes#DEFAULT} if not set. Must be the same on every cell. */
+        public Builder critical(CriticalTypes critical) {
+            this.critical = Objects.requireNonNull(critical, "critical");
+            return this;
+        }
+
+        /** Fragment reassembly limits of the decoder; {@link ReassemblySettings#DEFAULTS} if not set. */
+        public Builder reassembly(ReassemblySettings reassembly) {
+            this.reassembly = Objects.requireNonNull(reassembly, "reassembly");
+            return this;
+        }
+
+        /** Told the outcome of critical messages sent without a listener of their own; by default failures are logged. */
+        public Builder listener(DeliveryListener listener) {
+            this.listener = Objects.requireNonNull(listener, "listener");
+            return this;
+        }
+
+        public CommunicationManager build() {
+            if (random == null || router == null) {
+                throw new IllegalStateException("communication manager of '" + vehicleId + "' needs "
+                        + (random == null ? "a random source (random(...))" : "")
+                        + (random == null && router == null ? " and " : "")
+                        + (router == null ? "a message router (router(...))" : ""));
+            }
+            return new CommunicationManager(this);
+        }
+    }
+
+    /** The default listener: a critical message given up on is worth a warning. */
+    private record LoggingListener(String vehicleId) implements DeliveryListener {
+        @Override
+        public void failed(long id, FailureReason reason) {
+            log.warn("'{}': critical message {} was not delivered: {}", vehicleId, id, reason);
+        }
+    }
+}

@@ -1,0 +1,201 @@
+package net.smc.core.comm;
+
+import java.util.List;
+import java.util.random.RandomGenerator;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import net.smc.core.message.Ack;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Message;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Scheduler;
+
+/**
+ * The Message-Sender of the paper (section IV-A): reliable delivery of critical messages (role
+ * assignments, capability descriptions, ...) over connectionless datagrams. See
+ * <a href="doc-files/reliable-delivery.md">the reliable-delivery design note</a>.
+ *
+ * <p>As sender, it gives each message an id, transmits it and waits for an {@link Ack} naming
+ * that id from the address it went to; without one, it retransmits with exponential backoff and
+ * jitter ({@link SenderSettings}) and after the last try tells the {@link DeliveryListener} that
+ * delivery failed. As receiver, it acknowledges every critical copy that arrives (a lost Ack must
+ * be replaced) but lets each {@code (sender, id)} through only once, so the application sees each
+ * message exactly once however often the network or a retransmission repeats it.
+ *
+ * <p>Sans-IO and single-threaded: it uses only the clock, scheduler and transport of its cell,
+ * and every method must be called on the cell's thread. The {@link CommunicationManager} makes one
+ * per cell and feeds it; applications reach it through the manager.
+ */
+public final class MessageSender {
+    private static final Logger log = LoggerFactory.getLogger(MessageSender.class);
+
+    private final String self;
+    private final Clock clock;
+    private final Wire wire;
+    private final IdSource ids;
+    private final SenderSettings settings;
+    private final Backoff backoff;
+    private final PendingTable pending = new PendingTable();
+    private final RetryTimer timer;
+    private final DuplicateWindow window;
+    private final SenderCounters counters = new SenderCounters();
+    private boolean stopped;
+
+    MessageSender(String self, Clock clock, Scheduler scheduler, RandomGenerator random, SenderSettings settings,
+                  Wire wire, IdSource ids) {
+        this.self = self;
+        this.clock = clock;
+        this.wire = wire;
+        this.ids = ids;
+        this.settings = settings;
+        this.backoff = new Backoff(settings, random);
+        this.timer = new RetryTimer(clock, scheduler, this::timedOut);
+        this.window = new DuplicateWindow(settings.duplicateWindowMillis(), settings.duplicateWindowEntries());
+    }
+
+    /**
+     * Sends {@code message} to {@code to} reliably; {@code listener} learns the outcome later, on
+     * the cell's thread.
+     *
+     * @return the message's id, which the listener's calls and the peer's Ack name
+     * @throws IllegalStateException when the sender was stopped
+     */
+    public long send(Address to, Message message, DeliveryListener listener) {
+        if (stopped) {
+            throw new IllegalStateException("message sender of '" + self + "' is stopped; cannot send "
+                    + message.type() + " to " + to);
+        }
+        long id = ids.next();
+        List<byte[]> datagrams = wire.encode(new Envelope(self, id, message));
+        Pending p = new Pending(id, to, message.type(), datagrams, listener, clock.nowMillis());
+        transmit(p); // first, so that a transport that refuses leaves nothing behind
+        pending.add(p);
+        counters.sent++;
+        return id;
+    }
+
+    /** Handles an Ack that arrived from {@code from}: settles the message it names, if still outstanding. */
+    void acknowledged(Address from, Ack ack) {
+        Pending p = pending.get(ack.acked());
+        if (p == null) {
+            counters.unknownAcks++;
+            return;
+        }
+        if (!p.to.equals(from)) {
+            counters.misdirectedAcks++;
+            log.debug("'{}': Ack for {} came from {}, not from its destination; ignored", self, p, from);
+            return;
+        }
+        pending.remove(p.id);
+        p.settled = true;
+        counters.acked++;
+        try {
+            p.listener.delivered(p.id);
+        } catch (RuntimeException e) {
+            log.warn("'{}': delivery listener failed on delivered({}) for {}", self, p.id, p, e);
+        }
+    }
+
+    /**
+     * Checks a critical message that arrived against the duplicate window.
+     *
+     * @return true the first time this {@code (sender, id)} arrives within the window: the
+     *         application should have it; false for a duplicate, which is counted
+     */
+    boolean admit(Envelope envelope) {
+        if (window.firstSeen(envelope.sender(), envelope.id(), clock.nowMillis())) {
+            counters.delivered++;
+            return true;
+        }
+        counters.duplicates++;
+        return false;
+    }
+
+    /**
+     * Acknowledges a critical message to the address it came from, every time it arrives: if an
+     * earlier Ack was lost, this one settles the sender. Called after the message was handed to
+     * the application, so that "delivered" at the sender means the application had it.
+     */
+    void acknowledge(Address from, Envelope envelope) {
+        if (stopped) {
+            return;
+        }
+        wire.send(from, wire.encode(new Envelope(self, ids.next(), new Ack(envelope.id()))));
+        counters.acksSent++;
+    }
+
+    /**
+     * Stops retransmitting and reports every outstanding message failed ({@link FailureReason#STOPPED}),
+     * in send order. Later sends throw; stopping again does nothing.
+     */
+    public void stop() {
+        if (stopped) {
+            return;
+        }
+        stopped = true;
+        timer.stop();
+        for (Pending p : pending.drain()) {
+            fail(p, FailureReason.STOPPED);
+        }
+    }
+
+    /** Critical messages sent and neither acknowledged nor failed yet. */
+    public int outstanding() {
+        return pending.size();
+    }
+
+    public SenderCounters counters() {
+        return counters;
+    }
+
+    public SenderSettings settings() {
+        return settings;
+    }
+
+    /** Messages remembered by the duplicate window now. */
+    int remembered() {
+        return window.size();
+    }
+
+    /** Entries the duplicate window forgot before their time because it was full. */
+    public long duplicateWindowEvictions() {
+        return window.evictedEarly();
+    }
+
+    private void transmit(Pending p) {
+        p.tries++;
+        p.deadlineMillis = clock.nowMillis() + backoff.timeoutMillis(p.tries);
+        wire.send(p.to, p.datagrams);
+        timer.watch(p);
+    }
+
+    private void timedOut(Pending p) {
+        if (p.tries >= settings.maxTries()) {
+            pending.remove(p.id);
+            fail(p, FailureReason.NO_ACK);
+            return;
+        }
+        counters.retransmitted++;
+        try {
+            transmit(p);
+        } catch (RuntimeException e) {
+            log.warn("'{}': retransmission of {} refused by the transport", self, p, e);
+            pending.remove(p.id);
+            fail(p, FailureReason.SEND_ERROR);
+        }
+    }
+
+    private void fail(Pending p, FailureReason reason) {
+        p.settled = true;
+        counters.failed++;
+        log.debug("'{}': gave up on {} after {} ms: {}", self, p, clock.nowMillis() - p.firstSentMillis, reason);
+        try {
+            p.listener.failed(p.id, reason);
+        } catch (RuntimeException e) {
+            log.warn("'{}': delivery listener failed on failed({}, {}) for {}", self, p.id, reason, p, e);
+        }
+    }
+}

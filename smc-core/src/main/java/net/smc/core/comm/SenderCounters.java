@@ -1,0 +1,74 @@
+package net.smc.core.comm;
+
+/**
+ * What one cell's {@link MessageSender} has done, both as sender and as receiver of critical
+ * messages. Read on the cell's thread (or after it stopped). In a quiet network
+ * {@code sent == acked + failed + outstanding}; {@code delivered + duplicates} counts every
+ * critical copy received, and each of them was acknowledged ({@code acksSent}).
+ */
+public final class SenderCounters {
+    long sent;
+    long acked;
+    long retransmitted;
+    long failed;
+    long unknownAcks;
+    long misdirectedAcks;
+    long delivered;
+    long duplicates;
+    long acksSent;
+
+    SenderCounters() {
+    }
+
+    /** Critical messages sent (first transmissions). */
+    public long sent() {
+        return sent;
+    }
+
+    /** Critical messages whose Ack arrived. */
+    public long acked() {
+        return acked;
+    }
+
+    /** Retransmissions: transmissions after the first, over all messages. */
+    public long retransmitted() {
+        return retransmitted;
+    }
+
+    /** Critical messages given up on (reported to their listener as failed). */
+    public long failed() {
+        return failed;
+    }
+
+    /** Acks for no outstanding message: a duplicated or late Ack, after the first one settled it. */
+    public long unknownAcks() {
+        return unknownAcks;
+    }
+
+    /** Acks for an outstanding message that came from another address than the one it was sent to; ignored. */
+    public long misdirectedAcks() {
+        return misdirectedAcks;
+    }
+
+    /** Critical messages received for the first time and handed on to the application. */
+    public long delivered() {
+        return delivered;
+    }
+
+    /** Critical messages received again (retransmitted or duplicated) and suppressed; each was acknowledged again. */
+    public long duplicates() {
+        return duplicates;
+    }
+
+    /** Acks sent by this cell as a receiver. */
+    public long acksSent() {
+        return acksSent;
+    }
+
+    @Override
+    public String toString() {
+        return "sent=" + sent + " acked=" + acked + " retransmitted=" + retransmitted + " failed=" + failed
+                + " unknownAcks=" + unknownAcks + " misdirectedAcks=" + misdirectedAcks + " delivered=" + delivered
+                + " duplicates=" + duplicates + " acksSent=" + acksSent;
+    }
+}

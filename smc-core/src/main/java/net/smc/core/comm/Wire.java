@@ -1,0 +1,74 @@
+package net.smc.core.comm;
+
+import java.util.List;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import net.smc.core.message.DecodeResult;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.MessageDecoder;
+import net.smc.core.message.MessageEncoder;
+import net.smc.core.message.ReassemblySettings;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Transport;
+
+/**
+ * The cell's use of the codec and the transport: envelopes to datagrams and out, datagrams in to
+ * envelopes. Decoding never throws: a datagram that is not a message is counted by reason and, at
+ * debug level, logged with its source; a fragment is held by the decoder until its message is whole.
+ */
+final class Wire {
+    private static final Logger log = LoggerFactory.getLogger(Wire.class);
+
+    private final Transport transport;
+    private final MessageEncoder encoder = new MessageEncoder();
+    private final MessageDecoder decoder;
+    private final CommCounters counters;
+
+    Wire(Transport transport, Clock clock, ReassemblySettings reassembly, CommCounters counters) {
+        this.transport = transport;
+        this.decoder = new MessageDecoder(clock::nowMillis, reassembly);
+        this.counters = counters;
+    }
+
+    /** Encodes {@code envelope} into its datagrams (one, or fragment frames), which the caller may keep. */
+    List<byte[]> encode(Envelope envelope) {
+        return encoder.datagrams(envelope);
+    }
+
+    void send(Address to, List<byte[]> datagrams) {
+        for (byte[] d : datagrams) {
+            transport.send(to, d);
+            counters.datagramsSent++;
+        }
+    }
+
+    void broadcast(List<byte[]> datagrams) {
+        for (byte[] d : datagrams) {
+            transport.broadcast(d);
+            counters.datagramsSent++;
+        }
+    }
+
+    /** The message in {@code data}, or null when it was rejected or is a fragment of one not yet whole. */
+    Envelope decode(Address from, byte[] data) {
+        counters.datagramsReceived++;
+        DecodeResult result = decoder.decode(data);
+        if (result instanceof DecodeResult.Decoded d) {
+            return d.envelope();
+        }
+        if (result instanceof DecodeResult.FragmentPending) {
+            counters.fragmentsHeld++;
+            return null;
+        }
+        DecodeResult.Rejected r = (DecodeResult.Rejected) result;
+        counters.rejected[r.reason().ordinal()]++;
+        if (log.isDebugEnabled()) {
+            log.debug("{}: datagram of {} bytes from {} rejected, {}: {}", transport.localAddress(), data.length, from,
+                    r.reason(), r.detail());
+        }
+        return null;
+    }
+}

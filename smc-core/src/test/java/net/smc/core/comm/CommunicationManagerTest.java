@@ -1,0 +1,147 @@
+package net.smc.core.comm;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import org.junit.jupiter.api.Test;
+
+import net.smc.core.message.Ack;
+import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Heartbeat;
+import net.smc.core.message.MessageEncoder;
+import net.smc.core.message.MessageType;
+import net.smc.core.message.RejectReason;
+import net.smc.core.router.MessageRouter;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Transport;
+import net.smc.core.transport.sim.InMemoryNetwork;
+import net.smc.core.transport.sim.SimulationScheduler;
+
+/** The manager's own rules, on the in-memory network; a raw transport plays a peer that misbehaves. */
+class CommunicationManagerTest {
+    private final SimulationScheduler sim = new SimulationScheduler();
+    private final InMemoryNetwork network = new InMemoryNetwork(sim, 1);
+    private final MessageRouter router = new MessageRouter();
+    private final List<Envelope> dispatched = new ArrayList<>();
+    private final List<Envelope> rawReceived = new ArrayList<>();
+    private final Transport raw = network.attach(Address.loopback(4009));
+    private final CommunicationManager cell;
+
+    CommunicationManagerTest() {
+        for (MessageType t : MessageType.values()) {
+            router.register(dispatched::add, t);
+        }
+        cell = CommunicationManager.builder("uav-1", network.attach(Address.loopback(4001)), sim, sim)
+                .random(new SplittableRandom(1)).router(router).settings(ReliableDeliveryContract.SETTINGS).build();
+        cell.start();
+        var decoder = new net.smc.core.message.MessageDecoder(sim::nowMillis);
+        raw.setReceiver((from, data) -> rawReceived.add(
+                ((net.smc.core.message.DecodeResult.Decoded) decoder.decode(data)).envelope()));
+    }
+
+    private void inject(Envelope e) {
+        for (byte[] d : new MessageEncoder().datagrams(e)) {
+            raw.send(cell.localAddress(), d);
+        }
+    }
+
+    @Test
+    void messages_carryTheVehicleIdAndIncreasingIds() {
+        cell.send(raw.localAddress(), new Heartbeat("scout", 1, 0));
+        cell.send(raw.localAddress(), new CapabilityRequest("scout"), DeliveryListener.IGNORE);
+        cell.broadcast(new Heartbeat("scout", 2, 0));
+        sim.runFor(10);
+        assertEquals(3, rawReceived.size());
+        for (int i = 0; i < 3; i++) {
+            assertEquals("uav-1", rawReceived.get(i).sender());
+        }
+        assertTrue(rawReceived.get(0).id() < rawReceived.get(1).id() && rawReceived.get(1).id() < rawReceived.get(2).id());
+    }
+
+    @Test
+    void criticalMessage_isAcknowledgedEachTime_butDispatchedOnce() {
+        Envelope e = new Envelope("uav-9", 77, new CapabilityRequest("scout"));
+        inject(e);
+        inject(e);
+        inject(e);
+        sim.runFor(10);
+        assertEquals(1, dispatched.size());
+        assertEquals(3, rawReceived.size());
+        rawReceived.forEach(ack -> assertEquals(new Ack(77), ack.body()));
+        assertEquals(2, cell.sender().counters().duplicates());
+    }
+
+    @Test
+    void badDatagram_isCountedAndNotThrown() {
+        raw.send(cell.localAddress(), new byte[] {1, 2, 3});
+        sim.runFor(10);
+        assertEquals(1, cell.counters().rejected());
+        assertEquals(1, cell.counters().rejected(RejectReason.TRUNCATED) + cell.counters().rejected(RejectReason.BAD_MAGIC));
+        assertEquals(List.of(), dispatched);
+    }
+
+    @Test
+    void ack_fromAnotherAddress_isIgnored() {
+        Transport stranger = network.attach(Address.loopback(4010));
+        List<String> outcome = new ArrayList<>();
+        long id = cell.send(raw.localAddress(), new CapabilityRequest("scout"), new DeliveryListener() {
+            @Override
+            public void delivered(long id) {
+                outcome.add("delivered");
+            }
+        });
+        for (byte[] d : new MessageEncoder().datagrams(new Envelope("uav-9", 1, new Ack(id)))) {
+            stranger.send(cell.localAddress(), d);
+        }
+        sim.runFor(10);
+        assertEquals(List.of(), outcome);
+        assertEquals(1, cell.sender().counters().misdirectedAcks());
+        assertEquals(1, cell.sender().outstanding());
+    }
+
+    @Test
+    void stop_reportsOutstandingMessagesStopped_inSendOrder() {
+        List<String> outcome = new ArrayList<>();
+        DeliveryListener l = new DeliveryListener() {
+            @Override
+            public void failed(long id, FailureReason reason) {
+                outcome.add(id + " " + reason);
+            }
+        };
+        long first = cell.send(raw.localAddress(), new CapabilityRequest("a"), l);
+        long second = cell.send(raw.localAddress(), new CapabilityRequest("b"), l);
+        cell.stop();
+        assertEquals(List.of(first + " STOPPED", second + " STOPPED"), outcome);
+        var e = assertThrows(IllegalStateException.class, () -> cell.send(raw.localAddress(), new CapabilityRequest("c")));
+        assertTrue(e.getMessage().contains("'uav-1' is stopped"), e.getMessage());
+    }
+
+    @Test
+    void reliableSend_ofANonCriticalType_isRefused() {
+        var e = assertThrows(IllegalArgumentException.class,
+                () -> cell.send(raw.localAddress(), new Heartbeat("scout", 1, 0), DeliveryListener.IGNORE));
+        assertTrue(e.getMessage().startsWith("HEARTBEAT to 127.0.0.1:4009 cannot be sent reliably: it is not a critical type"),
+                e.getMessage());
+    }
+
+    @Test
+    void broadcast_ofACriticalType_isRefused() {
+        var e = assertThrows(IllegalArgumentException.class, () -> cell.broadcast(new CapabilityRequest("scout")));
+        assertTrue(e.getMessage().startsWith("CAPABILITY_REQUEST cannot be broadcast: it is a critical type"),
+                e.getMessage());
+    }
+
+    @Test
+    void build_withoutRouterOrRandom_namesWhatIsMissing() {
+        var e = assertThrows(IllegalStateException.class,
+                () -> CommunicationManager.builder("uav-2", network.attach(Address.loopback(4002)), sim, sim).build());
+        assertEquals("communication manager of 'uav-2' needs a random source (random(...)) and a message router"
+                + " (router(...))", e.getMessage());
+    }
+}
