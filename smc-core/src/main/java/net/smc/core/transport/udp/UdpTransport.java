@@ -6,7 +6,9 @@ import java.net.InetSocketAddress;
 import java.net.NetworkInterface;
 import java.util.Collections;
 import java.util.Objects;
+import java.util.Queue;
 import java.util.Set;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Executor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -20,6 +22,7 @@ import io.netty.channel.ChannelFuture;
 import io.netty.channel.ChannelFutureListener;
 import io.netty.channel.ChannelOption;
 import io.netty.channel.FixedRecvByteBufAllocator;
+import io.netty.channel.epoll.EpollChannelOption;
 import io.netty.channel.socket.DatagramPacket;
 
 import net.smc.core.transport.Address;
@@ -55,6 +58,8 @@ public final class UdpTransport implements Transport {
     private static final long CHANNEL_TIMEOUT_SECONDS = 10;
     /** Larger than any legal datagram, so an oversize one shows up as such instead of being cut silently. */
     private static final int READ_BUFFER_BYTES = 2048;
+    /** Datagrams one epoll read system call may take ({@code recvmmsg}). */
+    private static final int DATAGRAMS_PER_READ = 16;
 
     private final UdpSettings settings;
     private final UdpEventLoop loop;
@@ -67,6 +72,11 @@ public final class UdpTransport implements Transport {
     private final InetSocketAddress broadcastTarget;
     private final AtomicBoolean closed = new AtomicBoolean();
     private final ChannelFutureListener countFailure;
+    /** Datagrams sent but not yet handed to the channel; drained on the event loop by {@link #drain}. */
+    private final Queue<DatagramPacket> outbox = new ConcurrentLinkedQueue<>();
+    /** Whether a drain is queued on the event loop and has not started yet. */
+    private final AtomicBoolean drainQueued = new AtomicBoolean();
+    private final Runnable drain = this::drain;
 
     private UdpTransport(UdpSettings settings, UdpEventLoop loop, boolean ownsLoop, UdpStats stats, Inbox inbox,
                          Channel unicast, Channel broadcastChannel, Address localAddress, InetSocketAddress broadcastTarget) {
@@ -199,6 +209,7 @@ public final class UdpTransport implements Transport {
         if (ownsLoop) {
             loop.close();
         }
+        discardOutbox();   // a send that raced with close and found no loop to drain it
         log.debug("UDP transport {} closed", localAddress);
     }
 
@@ -224,15 +235,62 @@ public final class UdpTransport implements Transport {
         }
     }
 
+    /**
+     * Queues the datagram and, unless a drain is already queued, queues one on the event loop. So
+     * a burst of sends from the cell costs one task and one wake-up of the loop, and the drain
+     * writes the whole burst before one flush, which on epoll goes out in one {@code sendmmsg}.
+     */
     private void write(InetSocketAddress target, byte[] data) {
         ByteBuf buffer = unicast.alloc().buffer(data.length).writeBytes(data);   // Netty releases it after the write
-        unicast.writeAndFlush(new DatagramPacket(buffer, target)).addListener(countFailure);
+        outbox.add(new DatagramPacket(buffer, target));
+        if (drainQueued.compareAndSet(false, true)) {
+            try {
+                unicast.eventLoop().execute(drain);
+            } catch (RuntimeException e) {   // the loop is shutting down: nothing will write these
+                drainQueued.set(false);
+                discardOutbox();
+                throw e;
+            }
+        }
     }
 
+    /**
+     * On the event loop: writes every queued datagram, then flushes once. The flag is cleared
+     * before the queue is read, so a datagram queued meanwhile is either written here or queues a
+     * drain of its own; none is left behind.
+     */
+    private void drain() {
+        drainQueued.set(false);
+        DatagramPacket packet;
+        boolean wrote = false;
+        while ((packet = outbox.poll()) != null) {
+            unicast.write(packet).addListener(countFailure);
+            wrote = true;
+        }
+        if (wrote) {
+            unicast.flush();
+        }
+    }
+
+    private void discardOutbox() {
+        DatagramPacket packet;
+        while ((packet = outbox.poll()) != null) {
+            packet.release();
+            stats.sendFailures.increment();
+        }
+    }
+
+    /**
+     * On epoll, each read takes up to {@value #DATAGRAMS_PER_READ} datagrams in one {@code recvmmsg}
+     * (each in its own {@value #READ_BUFFER_BYTES}-byte slot of one buffer); on NIO, one per read.
+     */
     private static Bootstrap bootstrap(UdpEventLoop loop, UdpSettings settings) {
-        return loop.bootstrap()
-                .option(ChannelOption.SO_RCVBUF, settings.receiveBufferBytes())
-                .option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(READ_BUFFER_BYTES));
+        Bootstrap b = loop.bootstrap().option(ChannelOption.SO_RCVBUF, settings.receiveBufferBytes());
+        if (loop.isEpoll()) {
+            return b.option(EpollChannelOption.MAX_DATAGRAM_PAYLOAD_SIZE, READ_BUFFER_BYTES)
+                    .option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(READ_BUFFER_BYTES * DATAGRAMS_PER_READ));
+        }
+        return b.option(ChannelOption.RCVBUF_ALLOCATOR, new FixedRecvByteBufAllocator(READ_BUFFER_BYTES));
     }
 
     private static Channel bind(Bootstrap bootstrap, String host, int port, String role) throws IOException {
