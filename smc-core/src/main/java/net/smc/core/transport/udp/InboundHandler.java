@@ -1,6 +1,8 @@
 package net.smc.core.transport.udp;
 
 import java.net.InetSocketAddress;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.Predicate;
 
 import io.netty.buffer.ByteBuf;
@@ -21,6 +23,9 @@ import org.slf4j.LoggerFactory;
  * <p>Buffer ownership: the packet (and its {@code ByteBuf}) belongs to this handler while
  * {@link #channelRead0} runs; {@link SimpleChannelInboundHandler} releases it when that method
  * returns. So the payload is copied out first, and nothing of the packet escapes the event loop.
+ *
+ * <p>The datagrams of one read burst are collected and handed to the cell as one task when Netty
+ * signals the end of the burst ({@link #channelReadComplete}), in arrival order.
  */
 final class InboundHandler extends SimpleChannelInboundHandler<DatagramPacket> {
     private static final Logger log = LoggerFactory.getLogger(InboundHandler.class);
@@ -28,6 +33,8 @@ final class InboundHandler extends SimpleChannelInboundHandler<DatagramPacket> {
     private final Inbox inbox;
     private final UdpStats stats;
     private final Predicate<InetSocketAddress> ownSender;
+    /** Datagrams of the current read burst, handed to the cell together when the burst ends. */
+    private List<Inbox.Datagram> burst = new ArrayList<>();
 
     /**
      * @param ownSender true for a sender that is this cell itself; its datagrams are dropped
@@ -54,7 +61,18 @@ final class InboundHandler extends SimpleChannelInboundHandler<DatagramPacket> {
                     content.readableBytes(), sender, Transport.MAX_DATAGRAM_BYTES);
             return;
         }
-        inbox.received(Address.of(sender), ByteBufUtil.getBytes(content));
+        burst.add(new Inbox.Datagram(Address.of(sender), ByteBufUtil.getBytes(content)));
+    }
+
+    /** The end of a read burst (up to one {@code recvmmsg} or several reads): one task for the cell. */
+    @Override
+    public void channelReadComplete(ChannelHandlerContext ctx) {
+        if (!burst.isEmpty()) {
+            List<Inbox.Datagram> ready = burst;
+            burst = new ArrayList<>();
+            inbox.received(ready);
+        }
+        ctx.fireChannelReadComplete();
     }
 
     @Override

@@ -1,5 +1,6 @@
 package net.smc.core.transport.udp;
 
+import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
 
@@ -39,13 +40,31 @@ final class Inbox {
         closed = true;
     }
 
+    /** One datagram copied out of Netty: its source and payload. */
+    record Datagram(Address from, byte[] data) {
+    }
+
     /** On the event loop: queue the datagram for the cell. */
     void received(Address from, byte[] data) {
+        received(List.of(new Datagram(from, data)));
+    }
+
+    /** On the event loop: queue a burst of datagrams for the cell, as one task that delivers them in order. */
+    void received(List<Datagram> burst) {
         try {
-            cellExecutor.execute(() -> deliver(from, data));
+            cellExecutor.execute(() -> {
+                for (Datagram d : burst) {
+                    try {
+                        deliver(d.from(), d.data());
+                    } catch (RuntimeException e) {   // as if each datagram were a task of its own
+                        log.error("the receiver failed on a datagram from {}; the cell goes on with the next", d.from(), e);
+                    }
+                }
+            });
         } catch (RejectedExecutionException e) {
-            stats.droppedRejected.increment();
-            log.debug("datagram from {} dropped: the cell's executor refused it", from, e);
+            stats.droppedRejected.add(burst.size());
+            log.debug("{} datagram(s) from {} dropped: the cell's executor refused them", burst.size(),
+                    burst.get(0).from(), e);
         }
     }
 

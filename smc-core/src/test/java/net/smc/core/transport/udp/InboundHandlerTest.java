@@ -52,6 +52,21 @@ class InboundHandlerTest {
     }
 
     @Test
+    void readBurst_isOneTaskForTheCell_deliveredInOrder() {
+        ByteBuf first = Unpooled.copiedBuffer("one", UTF_8);
+        ByteBuf second = Unpooled.copiedBuffer("two", UTF_8);
+
+        channel.writeInbound(packet(first, PEER), packet(second, PEER));   // then channelReadComplete
+
+        assertEquals(0, first.refCnt());
+        assertEquals(0, second.refCnt());
+        assertEquals(1, cell.size(), "one task per read burst");
+        cell.runQueued();
+        assertEquals(List.of("127.0.0.1:4002 one", "127.0.0.1:4002 two"), recorder.received());
+        assertEquals(2, stats.delivered.sum());
+    }
+
+    @Test
     void ownDatagram_isFilteredOut_andReleased() {
         ByteBuf content = Unpooled.copiedBuffer("echo", UTF_8);
 
