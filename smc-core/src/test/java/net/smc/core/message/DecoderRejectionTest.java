@@ -190,16 +190,41 @@ class DecoderRejectionTest {
 
     @Test
     void unsortedResourceSet_isMalformed() {
-        reject(Raw.of(MessageType.DISCOVERY_REPLY).i64(1).str8("m").str8("uav2").u8(2).str8("video").str8("motion")
-                .u8(0).datagram(), RejectReason.MALFORMED, "DISCOVERY_REPLY from 'uav1' (id 7): summary.resources is"
-                + " not strictly increasing: 'motion' follows 'video'");
+        reject(discoveryReplyWithResources("abc", "xyz", "xyz", "abc"), RejectReason.MALFORMED, UNSORTED);
     }
 
     @Test
     void repeatedResource_isMalformed() {
-        reject(Raw.of(MessageType.DISCOVERY_REPLY).i64(1).str8("m").str8("uav2").u8(2).str8("video").str8("video")
-                .u8(0).datagram(), RejectReason.MALFORMED, "DISCOVERY_REPLY from 'uav1' (id 7): summary.resources is"
-                + " not strictly increasing: 'video' follows 'video'");
+        reject(discoveryReplyWithResources("abc", "abd", "abc", "abc"), RejectReason.MALFORMED, REPEATED);
+    }
+
+    private static final String UNSORTED = "DISCOVERY_REPLY from 'uav1' (id 7): summary: capability summary:"
+            + " resources[1] at byte 15: 'abc' does not come after 'xyz'; a set is written in ascending order without repeats";
+    private static final String REPEATED = "DISCOVERY_REPLY from 'uav1' (id 7): summary: capability summary:"
+            + " resources[1] at byte 15: 'abc' does not come after 'abc'; a set is written in ascending order without repeats";
+
+    /**
+     * A DISCOVERY_REPLY whose summary names resources {@code first} and {@code second} (a valid,
+     * sorted pair of equal length), then has them rewritten in place to {@code a} and {@code b}.
+     */
+    private static byte[] discoveryReplyWithResources(String first, String second, String a, String b) {
+        byte[] form = net.smc.core.capability.CapabilityCodec.STANDARD.encode(new net.smc.core.capability.CapabilitySummary(
+                "uav2", new java.util.TreeSet<>(java.util.List.of(first, second)), new java.util.TreeSet<>()));
+        overwrite(form, first, a);
+        overwrite(form, second, b);
+        return Raw.of(MessageType.DISCOVERY_REPLY).i64(1).str8("m").raw(form).datagram();
+    }
+
+    /** Overwrites the last occurrence of {@code was} in {@code bytes} with {@code now} (same length, ASCII). */
+    private static void overwrite(byte[] bytes, String was, String now) {
+        byte[] from = was.getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+        for (int at = bytes.length - from.length; at >= 0; at--) {
+            if (java.util.Arrays.equals(bytes, at, at + from.length, from, 0, from.length)) {
+                System.arraycopy(now.getBytes(java.nio.charset.StandardCharsets.US_ASCII), 0, bytes, at, from.length);
+                return;
+            }
+        }
+        throw new AssertionError("'" + was + "' is not in the encoded form");
     }
 
     @Test
