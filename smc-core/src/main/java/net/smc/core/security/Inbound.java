@@ -206,8 +206,8 @@ final class Inbound {
         long ts = frame.timestampMillis();
         long w = e.settings.freshnessWindowMillis();
         if (ts < now - w || ts > now + w) {
-            return reject(Rejection.STALE, sender, who + ": timestamp " + ts + " ms is " + (now - ts) + " ms behind the clock ("
-                    + now + " ms); the freshness window is " + w + " ms either way");
+            return reject(Rejection.STALE, sender, who + ": timestamp " + ts + " ms is " + Math.abs(now - ts) + " ms "
+                    + (ts < now ? "behind" : "ahead of") + " the clock (" + now + " ms); the freshness window is " + w + " ms either way");
         }
         if (window != null && !window.isFresh(frame.counter())) {
             return reject(Rejection.REPLAY, sender, who + ": counter " + frame.counter()

@@ -1,5 +1,7 @@
 package net.smc.core.security;
 
+import net.smc.core.transport.Transport;
+
 /**
  * A payload that, once the envelope is added, would not fit one datagram. Refused rather than
  * split: the layer above knows how to split its own data (see {@link SecureEndpoint#maxPayload}).
@@ -12,7 +14,7 @@ public final class PayloadTooLargeException extends IllegalArgumentException {
     PayloadTooLargeException(Protection protection, int payloadBytes, int overheadBytes, int limit) {
         super("payload of " + payloadBytes + " bytes does not fit a " + protection + " datagram: the envelope adds "
                 + overheadBytes + " bytes and a datagram may carry at most "
-                + net.smc.core.transport.Transport.MAX_DATAGRAM_BYTES + ", so the payload may be at most " + limit + " bytes");
+                + Transport.MAX_DATAGRAM_BYTES + ", so the payload may be at most " + limit + " bytes");
         this.limit = limit;
     }
 

@@ -238,7 +238,7 @@ public final class SecureEndpoint {
         return random;
     }
 
-    /** Installs {@code key} as the team key (tests; a vehicle gets it from {@link Inbound}). */
+    /** Makes {@code key} the team key; the same key again keeps what was remembered of counters under it. */
     void installTeamKey(byte[] key) {
         if (team == null || !java.util.Arrays.equals(team.key, key)) {
             team = new TeamKey(key);

@@ -8,7 +8,7 @@ import java.util.Locale;
  *
  * <pre>{@code
  * ./gradlew :smc-core:testClasses
- * java -cp "$(find smc-core/build -maxdepth 3 -name main -o -maxdepth 3 -name test | grep classes | tr '\n' :)$(find ~/.gradle -name 'slf4j-api-2*.jar' | head -1)" \
+ * java -cp smc-core/build/classes/java/main:smc-core/build/classes/java/test:smc-policy/build/classes/java/main:SLF4J_API_JAR \
  *     net.smc.core.security.SecurityCostProbe
  * }</pre>
  *

@@ -161,7 +161,9 @@ class SignedMessagesTest {
         byte[] datagram = commander.wrapSigned(discovery);
         team.clock.advance(-30_001);
 
-        refused(datagram, Rejection.STALE);
+        Unwrapped.Rejected r = refused(datagram, Rejection.STALE);
+
+        assertTrue(r.detail().contains("is 30001 ms ahead of the clock"), r.detail());
     }
 
     @Test
