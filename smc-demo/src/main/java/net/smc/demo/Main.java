@@ -32,6 +32,7 @@ public final class Main implements Callable<Integer> {
     /** The {@code smc} command reading and writing {@code io}'s streams. */
     static CommandLine commandLine(Io io) {
         CommandLine commandLine = new CommandLine(new Main())
+                .addSubcommand(new KeysCommand(io))
                 .addSubcommand(new RunCommand(io))
                 .addSubcommand(new ShellCommand(io))
                 .addSubcommand(new ValidateCommand(io));

@@ -1,0 +1,193 @@
+package net.smc.core.security;
+
+import java.util.HashMap;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Receiver;
+import net.smc.core.transport.Transport;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A {@link Transport} that authenticates everything it carries, so that a cell written against
+ * {@code Transport} gets authentication by being handed this instead of the bare transport.
+ *
+ * <ul>
+ *   <li>{@link #broadcast}: signed (discovery must reach vehicles that hold no team key yet);
+ *       {@link #teamBroadcast}: under the team key.</li>
+ *   <li>{@link #send}: MAC'd under the session with the vehicle at that address; signed while there
+ *       is none, and then a handshake goes along with it, so sessions form by themselves.</li>
+ *   <li>Arriving datagrams are unwrapped; payloads go to the receiver, handshake answers go back to
+ *       their sender, refusals are counted by the endpoint. When a peer MACs under a session this
+ *       side has lost (it restarted), a handshake goes back to it, at most
+ *       {@value #PROBES_PER_RETRY} such per handshake-retry interval in all.</li>
+ * </ul>
+ *
+ * Which vehicle is at which address is learned from authenticated datagrams only (signed, or MAC'd
+ * under a session). Same threading as the transport it wraps: one cell thread.
+ */
+public final class SecureTransport implements Transport {
+    static final int PROBES_PER_RETRY = 16;
+    private static final Logger LOG = LoggerFactory.getLogger(SecureTransport.class);
+
+    private final Transport inner;
+    private final SecureEndpoint endpoint;
+    private final Map<Address, String> peerAt = new HashMap<>();
+    private final Map<String, Address> addressOf = new HashMap<>();
+    private AuthenticatedReceiver receiver;
+    private long droppedNoReceiver;
+    private long probeIntervalStart = Long.MIN_VALUE;
+    private int probesInInterval;
+
+    /** Wraps {@code inner}, whose receiver it takes from now on. */
+    public SecureTransport(Transport inner, SecureEndpoint endpoint) {
+        this.inner = Objects.requireNonNull(inner, "inner");
+        this.endpoint = Objects.requireNonNull(endpoint, "endpoint");
+        inner.setReceiver(this::onDatagram);
+    }
+
+    @Override
+    public Address localAddress() {
+        return inner.localAddress();
+    }
+
+    /**
+     * Sends {@code data} to {@code to}, MAC'd if there is a session with the vehicle there, signed otherwise.
+     *
+     * @throws PayloadTooLargeException when the protected datagram would not fit
+     */
+    @Override
+    public void send(Address to, byte[] data) {
+        String peer = peerAt.get(Objects.requireNonNull(to, "to"));
+        if (peer != null && endpoint.hasSession(peer)) {
+            inner.send(to, endpoint.wrapFor(peer, data));
+            return;
+        }
+        inner.send(to, endpoint.wrapSigned(data));
+        if (peer != null && endpoint.needsHandshake(peer)) {
+            inner.send(to, endpoint.startHandshake(peer));
+        }
+    }
+
+    /**
+     * Broadcasts {@code data} signed, so that anyone who trusts the authority can check it.
+     *
+     * @throws PayloadTooLargeException when the protected datagram would not fit
+     */
+    @Override
+    public void broadcast(byte[] data) {
+        inner.broadcast(endpoint.wrapSigned(data));
+    }
+
+    /**
+     * Broadcasts {@code data} under the team key: 16 bytes of MAC instead of 64 of signature and a
+     * credential, for traffic only team members need.
+     *
+     * @throws IllegalStateException    when the endpoint holds no team key
+     * @throws PayloadTooLargeException when the protected datagram would not fit
+     */
+    public void teamBroadcast(byte[] data) {
+        inner.broadcast(endpoint.wrapTeam(data));
+    }
+
+    /**
+     * Sends the team key to the vehicle at {@code to}, sealed under the session with it.
+     *
+     * @throws IllegalStateException when no authenticated vehicle is known there, or there is no session with it or no team key
+     */
+    public void sendTeamKey(Address to) {
+        String peer = peerAt(to).orElseThrow(() -> new IllegalStateException(
+                "no authenticated vehicle is known at " + to + " to send the team key to"));
+        inner.send(to, endpoint.wrapTeamKey(peer));
+    }
+
+    /** The vehicle last authenticated at {@code address}. */
+    public Optional<String> peerAt(Address address) {
+        return Optional.ofNullable(peerAt.get(address));
+    }
+
+    /** Where vehicle {@code peer} last sent an authenticated datagram from. */
+    public Optional<Address> addressOf(String peer) {
+        return Optional.ofNullable(addressOf.get(peer));
+    }
+
+    /** The endpoint underneath, for its counters and sessions. */
+    public SecureEndpoint endpoint() {
+        return endpoint;
+    }
+
+    /** Authenticated payloads that arrived before any receiver was set. */
+    public long droppedNoReceiver() {
+        return droppedNoReceiver;
+    }
+
+    /** Registers the receiver of payloads, which learns only the address they came from. */
+    @Override
+    public void setReceiver(Receiver receiver) {
+        Objects.requireNonNull(receiver, "receiver");
+        setAuthenticatedReceiver((sender, from, protection, payload) -> receiver.onDatagram(from, payload));
+    }
+
+    /**
+     * Registers the receiver of payloads, which learns who sent each.
+     *
+     * @throws IllegalStateException when a receiver is already set
+     */
+    public void setAuthenticatedReceiver(AuthenticatedReceiver receiver) {
+        if (this.receiver != null) {
+            throw new IllegalStateException("a receiver is already set on the secure transport at " + localAddress());
+        }
+        this.receiver = Objects.requireNonNull(receiver, "receiver");
+    }
+
+    @Override
+    public void close() {
+        inner.close();
+    }
+
+    private void onDatagram(Address from, byte[] data) {
+        Unwrapped result = endpoint.unwrap(data);
+        if (result instanceof Unwrapped.Delivered d) {
+            if (d.protection() != Protection.TEAM_MAC) {
+                learn(d.sender(), from);
+            }
+            if (receiver == null) {
+                droppedNoReceiver++;
+                return;
+            }
+            receiver.onMessage(d.sender(), from, d.protection(), d.payload());
+        } else if (result instanceof Unwrapped.Control c) {
+            learn(c.sender(), from);
+            c.replyDatagram().ifPresent(reply -> inner.send(from, reply));
+        } else if (result instanceof Unwrapped.Rejected r && r.reason() == Rejection.UNKNOWN_SENDER) {
+            probe(r.claimedSender(), from);
+        }
+    }
+
+    /** A peer MACs under a session this side does not have: offer a new one, within the probe budget. */
+    private void probe(String claimed, Address from) {
+        if (claimed == null || claimed.equals(endpoint.id()) || !endpoint.needsHandshake(claimed)) {
+            return;
+        }
+        long now = endpoint.clock.nowMillis();
+        if (probeIntervalStart == Long.MIN_VALUE || now - probeIntervalStart >= endpoint.settings.handshakeRetryMillis()) {
+            probeIntervalStart = now;
+            probesInInterval = 0;
+        }
+        if (probesInInterval < PROBES_PER_RETRY) {
+            probesInInterval++;
+            LOG.debug("'{}' offers a handshake to '{}' at {}, which MACs under a session it does not have", endpoint.id(), claimed, from);
+            inner.send(from, endpoint.startHandshake(claimed));
+        }
+    }
+
+    private void learn(String peer, Address from) {
+        Address before = addressOf.put(peer, from);
+        if (before != null && !before.equals(from)) {
+            peerAt.remove(before, peer);
+        }
+        peerAt.put(from, peer);
+    }
+}
