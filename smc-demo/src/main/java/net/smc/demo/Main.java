@@ -10,8 +10,9 @@ import picocli.CommandLine.Spec;
 
 /**
  * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}),
- * {@code shell} ({@link ShellCommand}) and {@code validate} ({@link ValidateCommand}). Only {@link #main} touches the process (its streams and
- * its exit status); {@link #commandLine(Io)} builds the same command on any streams.
+ * {@code shell} ({@link ShellCommand}), {@code validate} ({@link ValidateCommand}) and
+ * {@code keys} ({@link KeysCommand}). Only {@link #main} touches the process (its streams and its
+ * exit status); {@link #commandLine(Io)} builds the same command on any streams.
  */
 @Command(name = "smc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         synopsisSubcommandLabel = "COMMAND",
@@ -46,7 +47,7 @@ public final class Main implements Callable<Integer> {
     /** {@code smc} without a command. */
     @Override
     public Integer call() {
-        throw new ParameterException(spec.commandLine(), "no command given: use run, shell or validate");
+        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate or keys");
     }
 
     /** The version line of {@code smc --version} and the subcommands' {@code --version}. */
