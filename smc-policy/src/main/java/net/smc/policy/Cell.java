@@ -31,7 +31,8 @@ import net.smc.policy.runtime.Values;
  *
  * <pre>{@code
  * List<String> lines = new ArrayList<>();
- * Cell cell = Cell.builder().output(lines::add).errors(d -> System.err.println(d)).build();
+ * List<Diagnostic> errors = new ArrayList<>();
+ * Cell cell = Cell.builder().output(lines::add).errors(errors::add).build();
  * cell.run("boot.p2", """
  *     root/event at: "alarm" put: (root/factory/event create: #("level")).
  *     p := root/factory/ecapolicy create.
