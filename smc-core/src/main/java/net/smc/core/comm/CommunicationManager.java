@@ -7,6 +7,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 import net.smc.core.message.Ack;
+import net.smc.core.message.Acks;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Message;
 import net.smc.core.message.ReassemblySettings;
@@ -24,7 +25,8 @@ import net.smc.core.transport.Transport;
  * as sender and a fresh id, increasing per cell.
  *
  * <p>Incoming datagrams are decoded (a bad one is counted and logged at debug level, never thrown),
- * Acks are consumed, critical messages are acknowledged and de-duplicated, and each application
+ * Acks (single or coalesced) are consumed, critical messages are acknowledged (coalesced per
+ * burst, see {@link MessageSender}) and de-duplicated, and each application
  * message is handed once to the {@link MessageRouter}. Connectionless messages keep UDP's
  * semantics: one may be lost or, if the network duplicates it, dispatched twice.
  *
@@ -191,6 +193,11 @@ public final class CommunicationManager {
         if (body instanceof Ack ack) {
             counters.acksReceived++;
             sender.acknowledged(from, ack);
+            return;
+        }
+        if (body instanceof Acks acks) {
+            counters.acksReceived++;
+            sender.acknowledged(from, acks);
             return;
         }
         if (!critical.contains(body.type())) {

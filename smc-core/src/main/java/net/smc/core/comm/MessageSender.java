@@ -1,14 +1,19 @@
 package net.smc.core.comm;
 
+import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.random.RandomGenerator;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 import net.smc.core.message.Ack;
+import net.smc.core.message.Acks;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Message;
+import net.smc.core.message.WireFormat;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
 import net.smc.core.transport.Scheduler;
@@ -18,11 +23,11 @@ import net.smc.core.transport.Scheduler;
  * assignments, capability descriptions, ...) over connectionless datagrams. See
  * <a href="doc-files/reliable-delivery.md">the reliable-delivery design note</a>.
  *
- * <p>As sender, it gives each message an id, transmits it and waits for an {@link Ack} naming
- * that id from the address it went to; without one, it retransmits with exponential backoff and
+ * <p>As sender, it gives each message an id, transmits it and waits for an {@link Ack} (or an
+ * {@link Acks} among whose ids it is) naming that id from the address it went to; without one, it retransmits with exponential backoff and
  * jitter ({@link SenderSettings}) and after the last try tells the {@link DeliveryListener} that
  * delivery failed. As receiver, it acknowledges every critical copy that arrives (a lost Ack must
- * be replaced) but lets each {@code (sender, id)} through only once, so the application sees each
+ * be replaced; the acknowledgements of one burst go to each peer coalesced in one datagram) but lets each {@code (sender, id)} through only once, so the application sees each
  * message exactly once however often the network or a retransmission repeats it.
  *
  * <p>Sans-IO and single-threaded: it uses only the clock, scheduler and transport of its cell,
@@ -42,6 +47,9 @@ public final class MessageSender {
     private final RetryTimer timer;
     private final DuplicateWindow window;
     private final SenderCounters counters = new SenderCounters();
+    private final Scheduler scheduler;
+    private final Map<Address, AckBatch> waitingAcks = new LinkedHashMap<>();
+    private boolean flushScheduled;
     private boolean stopped;
 
     MessageSender(String self, Clock clock, Scheduler scheduler, RandomGenerator random, SenderSettings settings,
@@ -50,6 +58,7 @@ public final class MessageSender {
         this.clock = clock;
         this.wire = wire;
         this.ids = ids;
+        this.scheduler = scheduler;
         this.settings = settings;
         this.backoff = new Backoff(settings, random);
         this.timer = new RetryTimer(clock, scheduler, this::timedOut);
@@ -79,7 +88,19 @@ public final class MessageSender {
 
     /** Handles an Ack that arrived from {@code from}: settles the message it names, if still outstanding. */
     void acknowledged(Address from, Ack ack) {
-        Pending p = pending.get(ack.acked());
+        settle(from, ack.acked());
+    }
+
+    /** Handles an Acks that arrived from {@code from}: settles each id in turn, exactly as an Ack would. */
+    void acknowledged(Address from, Acks acks) {
+        List<Long> acked = acks.acked();
+        for (int i = 0; i < acked.size(); i++) {
+            settle(from, acked.get(i));
+        }
+    }
+
+    private void settle(Address from, long id) {
+        Pending p = pending.get(id);
         if (p == null) {
             counters.unknownAcks++;
             return;
@@ -118,13 +139,66 @@ public final class MessageSender {
      * Acknowledges a critical message to the address it came from, every time it arrives: if an
      * earlier Ack was lost, this one settles the sender. Called after the message was handed to
      * the application, so that "delivered" at the sender means the application had it.
+     *
+     * <p>The acknowledgement is coalesced: the id waits with the others for the same address until
+     * a flush task, scheduled with delay 0 when the first id starts waiting, runs after the current
+     * burst of incoming datagrams; then each address gets one datagram, an {@link Ack} for a single
+     * id, an {@link Acks} for several. An address with {@link WireFormat#MAX_ACKS} ids waiting is
+     * flushed at once.
      */
     void acknowledge(Address from, Envelope envelope) {
         if (stopped) {
             return;
         }
-        wire.send(from, wire.encode(new Envelope(self, ids.next(), new Ack(envelope.id()))));
         counters.acksSent++;
+        AckBatch batch = waitingAcks.get(from);
+        if (batch == null) {
+            batch = new AckBatch();
+            waitingAcks.put(from, batch);
+        }
+        batch.ids[batch.size++] = envelope.id();
+        if (batch.size == WireFormat.MAX_ACKS) {
+            waitingAcks.remove(from);
+            sendAcks(from, batch);
+        }
+        if (!flushScheduled && !waitingAcks.isEmpty()) {
+            flushScheduled = true;
+            scheduler.schedule(0, this::flushAcks);
+        }
+    }
+
+    /** The flush task: one datagram to each address with acknowledgements waiting, in arrival order. */
+    private void flushAcks() {
+        flushScheduled = false;
+        if (stopped) {
+            waitingAcks.clear();
+            return;
+        }
+        for (Map.Entry<Address, AckBatch> e : waitingAcks.entrySet()) {
+            sendAcks(e.getKey(), e.getValue());
+        }
+        waitingAcks.clear();
+    }
+
+    private void sendAcks(Address to, AckBatch batch) {
+        Message body;
+        if (batch.size == 1) {
+            body = new Ack(batch.ids[0]);
+        } else {
+            Long[] acked = new Long[batch.size];
+            for (int i = 0; i < batch.size; i++) {
+                acked[i] = batch.ids[i];
+            }
+            body = new Acks(Arrays.asList(acked));
+        }
+        wire.send(to, wire.encode(new Envelope(self, ids.next(), body)));
+        counters.ackDatagrams++;
+    }
+
+    /** Ids acknowledged to one address and not yet sent. */
+    private static final class AckBatch {
+        final long[] ids = new long[WireFormat.MAX_ACKS];
+        int size;
     }
 
     /**

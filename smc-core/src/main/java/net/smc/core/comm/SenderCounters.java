@@ -16,6 +16,7 @@ public final class SenderCounters {
     long delivered;
     long duplicates;
     long acksSent;
+    long ackDatagrams;
 
     SenderCounters() {
     }
@@ -65,10 +66,15 @@ public final class SenderCounters {
         return acksSent;
     }
 
+    /** Datagrams that carried acknowledgements (an Ack or a coalesced Acks); at most {@link #acksSent()}. */
+    public long ackDatagrams() {
+        return ackDatagrams;
+    }
+
     @Override
     public String toString() {
         return "sent=" + sent + " acked=" + acked + " retransmitted=" + retransmitted + " failed=" + failed
                 + " unknownAcks=" + unknownAcks + " misdirectedAcks=" + misdirectedAcks + " delivered=" + delivered
-                + " duplicates=" + duplicates + " acksSent=" + acksSent;
+                + " duplicates=" + duplicates + " acksSent=" + acksSent + " ackDatagrams=" + ackDatagrams;
     }
 }

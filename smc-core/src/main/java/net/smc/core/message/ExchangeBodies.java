@@ -3,7 +3,8 @@ package net.smc.core.message;
 import java.util.List;
 
 /**
- * Payloads of the messages of a running team: policies, heartbeats, acknowledgements, role events
+ * Payloads of the messages of a running team: policies, heartbeats, acknowledgements (single and
+ * coalesced), role events
  * and remote invocations. Fields follow each other in record order.
  */
 final class ExchangeBodies {
@@ -40,6 +41,23 @@ final class ExchangeBodies {
             (m, w) -> w.i64(m.acked()),
             r -> new Ack(r.i64("acked")));
 
+    static final BodyCodec<Acks> ACKS = new BodyCodec<>(MessageType.ACKS, Acks.class,
+            (m, w) -> {
+                List<Long> ids = m.acked();
+                w.u8(ids.size());
+                for (int i = 0; i < ids.size(); i++) {
+                    w.i64(ids.get(i));
+                }
+            },
+            r -> {
+                int n = r.count("acked", WireFormat.MAX_ACKS, 8);
+                Long[] ids = new Long[n];
+                for (int i = 0; i < n; i++) {
+                    ids[i] = r.i64("acked");
+                }
+                return new Acks(java.util.Arrays.asList(ids));
+            });
+
     static final BodyCodec<RoleEvent> ROLE_EVENT = new BodyCodec<>(MessageType.ROLE_EVENT, RoleEvent.class,
             (m, w) -> {
                 w.string8(m.role());
@@ -75,5 +93,5 @@ final class ExchangeBodies {
             });
 
     static final List<BodyCodec<?>> ALL = List.of(POLICY_REQUEST, POLICY_REPLY, HEARTBEAT, ACK,
-            ROLE_EVENT, INVOCATION, INVOCATION_RESULT);
+            ROLE_EVENT, INVOCATION, INVOCATION_RESULT, ACKS);
 }

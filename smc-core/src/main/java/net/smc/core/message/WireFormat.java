@@ -58,6 +58,11 @@ public final class WireFormat {
     public static final int MAX_OPERATIONS = 64;
     /** Argument types of one operation, and attributes of one event. */
     public static final int MAX_ARGUMENTS = 16;
+    /**
+     * Ids confirmed by one {@link Acks}: 1 + 128 x 8 bytes of payload, so that with the longest
+     * sender it still fits one datagram.
+     */
+    public static final int MAX_ACKS = 128;
 
     private WireFormat() {
     }

@@ -78,6 +78,17 @@ class CodecRoundTripTest {
     }
 
     @Test
+    void theLargestAcks_fitsOneDatagram_withTheLongestSender() {
+        Envelope e = new Envelope(Samples.ascii(64), 1, new Acks(Samples.maxAcks()));
+        List<byte[]> datagrams = codec.encode(e);
+        assertEquals(1, datagrams.size());
+        // header 15 + sender 64, count 1, 128 ids of 8 bytes
+        assertEquals(15 + 64 + 1 + 8 * WireFormat.MAX_ACKS, datagrams.get(0).length);
+        assertTrue(datagrams.get(0).length <= WireFormat.MAX_DATAGRAM);
+        assertEquals(e, codec.roundTrip(e));
+    }
+
+    @Test
     void aDatagramOfExactly1400Bytes_isNotFragmented_and1401Are() {
         String sender = Samples.ascii(64);
         // PolicyReply payload: inReplyTo 8, uri 1+1, version 4, text 2+n; header 15+64.

@@ -64,7 +64,7 @@ class DecoderRejectionTest {
 
     @Test
     void unassignedTypeCode_isUnknownType() {
-        for (int code : new int[] {0x00, 0x10, 0xFE}) {
+        for (int code : new int[] {0x00, 0x11, 0xFE}) {
             Raw raw = heartbeat();
             raw.type = code;
             reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 37 bytes: type code 0x%02X is"
@@ -174,6 +174,34 @@ class DecoderRejectionTest {
         }
         reject(raw.u8(0).datagram(), RejectReason.MALFORMED, "INVOCATION from 'uav1' (id 7): args nests lists 5 deep;"
                 + " at most 4 are allowed");
+    }
+
+    @Test
+    void acksOver128Ids_areOversized() {
+        Raw raw = Raw.of(MessageType.ACKS).u8(129);
+        for (int i = 0; i < 129; i++) {
+            raw.i64(i);
+        }
+        reject(raw.datagram(), RejectReason.OVERSIZED, "ACKS from 'uav1' (id 7): acked has 129 elements; at most"
+                + " 128 are allowed");
+    }
+
+    @Test
+    void acksCountBeyondTheRemainingBytes_isTruncated() {
+        reject(Raw.of(MessageType.ACKS).u8(3).i64(1).i64(2).datagram(), RejectReason.TRUNCATED,
+                "ACKS from 'uav1' (id 7): acked has 3 elements but only 16 bytes remain");
+    }
+
+    @Test
+    void acksWithNoIds_isAnInvalidField() {
+        reject(Raw.of(MessageType.ACKS).u8(0).datagram(), RejectReason.INVALID_FIELD,
+                "ACKS from 'uav1' (id 7): Acks.acked is empty; it must name 1 to 128 ids");
+    }
+
+    @Test
+    void acksWithBytesAfterTheLastId_isMalformed() {
+        reject(Raw.of(MessageType.ACKS).u8(1).i64(1).u8(0).datagram(), RejectReason.MALFORMED,
+                "ACKS from 'uav1' (id 7): 1 bytes follow the last field");
     }
 
     @Test

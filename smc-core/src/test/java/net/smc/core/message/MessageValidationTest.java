@@ -47,6 +47,38 @@ class MessageValidationTest {
     }
 
     @Test
+    void acks_refuseMoreThan128Ids() {
+        List<Long> ids = new ArrayList<>(Samples.maxAcks());
+        ids.add(1L);
+        assertEquals("Acks.acked has 129 elements; at most 128 are allowed", refusal(() -> new Acks(ids)));
+    }
+
+    @Test
+    void acks_refuseNoIds() {
+        assertEquals("Acks.acked is empty; it must name 1 to 128 ids", refusal(() -> new Acks(List.of())));
+    }
+
+    @Test
+    void acks_refuseANullId() {
+        assertEquals("Acks.acked[1] is null; elements are required",
+                refusal(() -> new Acks(Arrays.asList(1L, null))));
+    }
+
+    @Test
+    void acks_refuseAMissingList() {
+        assertEquals("Acks.acked is null; it is required", refusal(() -> new Acks(null)));
+    }
+
+    @Test
+    void acks_keepAnImmutableCopy() {
+        List<Long> ids = new ArrayList<>(List.of(1L, 2L));
+        Acks acks = new Acks(ids);
+        ids.add(3L);
+        assertEquals(List.of(1L, 2L), acks.acked());
+        assertThrows(UnsupportedOperationException.class, () -> acks.acked().add(4L));
+    }
+
+    @Test
     void heartbeat_refusesANegativeEpoch() {
         assertEquals("Heartbeat.epoch is -3; it must be 0 or more", refusal(() -> new Heartbeat("r", -3, 0)));
     }

@@ -116,7 +116,8 @@ final class Samples {
                 InvocationResult.ok(17, null),
                 InvocationResult.failed(18, "no such operation"),
                 new Leave("shutting down"),
-                new Status("rescue", IDENTITY, "uav1", 7, 5));
+                new Status("rescue", IDENTITY, "uav1", 7, 5),
+                new Acks(List.of(3L, Long.MIN_VALUE, 3L)));
     }
 
     /** Messages at the limits of their fields (each still fits one datagram with a short sender). */
@@ -148,7 +149,18 @@ final class Samples {
                 InvocationResult.failed(0, ascii(255)),
                 new Leave(""),
                 new Leave(mixed(255)),
-                new Status(name64, new Identity(name64, 0, 0), ascii(64), Long.MAX_VALUE, Integer.MAX_VALUE));
+                new Status(name64, new Identity(name64, 0, 0), ascii(64), Long.MAX_VALUE, Integer.MAX_VALUE),
+                new Acks(List.of(Long.MAX_VALUE)),
+                new Acks(maxAcks()));
+    }
+
+    /** An Acks of the most ids it may hold. */
+    static List<Long> maxAcks() {
+        List<Long> ids = new ArrayList<>();
+        for (long i = 0; i < WireFormat.MAX_ACKS; i++) {
+            ids.add(Long.MAX_VALUE - i);
+        }
+        return ids;
     }
 
     /** Senders at the limits: the shortest, and 64 bytes in 1-, 2- and 4-byte characters. */
