@@ -24,14 +24,7 @@ final class CapabilityCodec {
     }
 
     static CapabilitySummary readSummary(WireReader r) throws DecodeException {
-        ByteBuffer form = ByteBuffer.wrap(r.array(), r.position(), r.remaining());
-        try {
-            CapabilitySummary summary = FORMS.readSummary(form);
-            r.take(form.position() - r.position(), "summary");
-            return summary;
-        } catch (CapabilityFormatException e) {
-            throw new DecodeException(RejectReason.MALFORMED, "summary: " + e.getMessage());
-        }
+        return read(r, "summary", FORMS::readSummary);
     }
 
     static void writeDescription(CapabilityDescription d, WireWriter w) {
@@ -39,13 +32,22 @@ final class CapabilityCodec {
     }
 
     static CapabilityDescription readDescription(WireReader r) throws DecodeException {
+        return read(r, "description", FORMS::readDescription);
+    }
+
+    /** Reads one capability form of the given kind at the reader's position, moving past it. */
+    private interface FormReader<T> {
+        T read(ByteBuffer form) throws CapabilityFormatException;
+    }
+
+    private static <T> T read(WireReader r, String field, FormReader<T> reader) throws DecodeException {
         ByteBuffer form = ByteBuffer.wrap(r.array(), r.position(), r.remaining());
         try {
-            CapabilityDescription description = FORMS.readDescription(form);
-            r.take(form.position() - r.position(), "description");
-            return description;
+            T value = reader.read(form);
+            r.take(form.position() - r.position(), field);
+            return value;
         } catch (CapabilityFormatException e) {
-            throw new DecodeException(RejectReason.MALFORMED, "description: " + e.getMessage());
+            throw new DecodeException(RejectReason.MALFORMED, field + ": " + e.getMessage());
         }
     }
 }
