@@ -5,7 +5,7 @@ import net.smc.core.message.RejectReason;
 /**
  * What one cell's {@link CommunicationManager} has moved: messages and datagrams out, datagrams
  * in and what became of each. Every datagram received ends in exactly one of: an application
- * message dispatched, a duplicate suppressed, an Ack consumed, a fragment held, or a rejection, so
+ * message dispatched, a duplicate suppressed, an Ack consumed, a fragment held, a spoofed message dropped, or a rejection, so
  * nothing is dropped without a count. Read on the cell's thread (or after it stopped).
  */
 public final class CommCounters {
@@ -16,6 +16,7 @@ public final class CommCounters {
     long dispatched;
     long acksReceived;
     long fragmentsHeld;
+    long spoofed;
     final long[] rejected = new long[RejectReason.values().length];
 
     CommCounters() {
@@ -56,6 +57,11 @@ public final class CommCounters {
         return fragmentsHeld;
     }
 
+    /** Messages dropped because the envelope named another sender than the transport proved. */
+    public long spoofed() {
+        return spoofed;
+    }
+
     /** Datagrams the decoder rejected, for any reason. */
     public long rejected() {
         long sum = 0;
@@ -74,6 +80,6 @@ public final class CommCounters {
     public String toString() {
         return "unicasts=" + unicasts + " broadcasts=" + broadcasts + " datagramsSent=" + datagramsSent
                 + " datagramsReceived=" + datagramsReceived + " dispatched=" + dispatched + " acksReceived="
-                + acksReceived + " fragmentsHeld=" + fragmentsHeld + " rejected=" + rejected();
+                + acksReceived + " fragmentsHeld=" + fragmentsHeld + " spoofed=" + spoofed + " rejected=" + rejected();
     }
 }

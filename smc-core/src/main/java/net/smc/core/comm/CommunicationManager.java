@@ -1,6 +1,9 @@
 package net.smc.core.comm;
 
+import java.util.HashMap;
+import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.random.RandomGenerator;
 
 import org.slf4j.Logger;
@@ -12,6 +15,7 @@ import net.smc.core.message.Envelope;
 import net.smc.core.message.Message;
 import net.smc.core.message.ReassemblySettings;
 import net.smc.core.router.MessageRouter;
+import net.smc.core.security.AuthenticatingTransport;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
 import net.smc.core.transport.Scheduler;
@@ -29,6 +33,11 @@ import net.smc.core.transport.Transport;
  * burst, see {@link MessageSender}) and de-duplicated, and each application
  * message is handed once to the {@link MessageRouter}. Connectionless messages keep UDP's
  * semantics: one may be lost or, if the network duplicates it, dispatched twice.
+ *
+ * <p>On an {@link AuthenticatingTransport} the envelope's sender must be the proven sender: a
+ * message whose envelope names another vehicle is dropped and counted as spoofed. Either way the
+ * manager remembers the address each vehicle last sent from ({@link #addressOf}), so that replies
+ * and protocols can name peers by vehicle id.
  *
  * <p>Sans-IO: it uses only the given clock, scheduler and transport, and must be called on the
  * cell's thread (in deployment, submit to the cell's executor). A pair of simulated cells:
@@ -59,6 +68,7 @@ public final class CommunicationManager {
     private final Wire wire;
     private final IdSource ids;
     private final MessageSender sender;
+    private final Map<String, Address> addresses = new HashMap<>();
     private boolean started;
     private boolean stopped;
 
@@ -87,7 +97,26 @@ public final class CommunicationManager {
             throw new IllegalStateException("communication manager of '" + vehicleId + "' is already started");
         }
         started = true;
-        transport.setReceiver(this::onDatagram);
+        if (transport instanceof AuthenticatingTransport authenticating) {
+            authenticating.setAuthenticatedReceiver((proven, from, protection, data) -> onDatagram(proven, from, data));
+        } else {
+            transport.setReceiver(this::onDatagram);
+        }
+    }
+
+    /** Whether senders are proven by the transport rather than claimed by the envelope. */
+    public boolean authenticated() {
+        return transport instanceof AuthenticatingTransport;
+    }
+
+    /** The address vehicle {@code vehicle} last sent a message from, if it has sent one. */
+    public Optional<Address> addressOf(String vehicle) {
+        return Optional.ofNullable(addresses.get(vehicle));
+    }
+
+    /** Teaches the address of a vehicle this cell has not heard from yet (a replicated roster, say). */
+    public void learnAddress(String vehicle, Address address) {
+        addresses.putIfAbsent(Objects.requireNonNull(vehicle, "vehicle"), Objects.requireNonNull(address, "address"));
     }
 
     /**
@@ -182,6 +211,11 @@ public final class CommunicationManager {
 
     /** One datagram from the transport, on the cell's thread. */
     void onDatagram(Address from, byte[] data) {
+        onDatagram(null, from, data);
+    }
+
+    /** One datagram; {@code proven} is its authenticated sender, or null on a plain transport. */
+    private void onDatagram(String proven, Address from, byte[] data) {
         if (stopped) {
             return;
         }
@@ -189,6 +223,13 @@ public final class CommunicationManager {
         if (envelope == null) {
             return;
         }
+        if (proven != null && !proven.equals(envelope.sender())) {
+            counters.spoofed++;
+            log.debug("'{}': dropped {} from {} claiming to be '{}' but authenticated as '{}'", vehicleId,
+                    envelope.type(), from, envelope.sender(), proven);
+            return;
+        }
+        addresses.put(envelope.sender(), from);
         Message body = envelope.body();
         if (body instanceof Ack ack) {
             counters.acksReceived++;

@@ -21,7 +21,7 @@ package net.smc.core.message;
  * <tr><td>0x06</td><td>ASSIGNMENT_RESPONSE</td><td>0x0E</td><td>LEAVE</td></tr>
  * <tr><td>0x07</td><td>POLICY_REQUEST</td><td>0x0F</td><td>STATUS</td></tr>
  * <tr><td>0x08</td><td>POLICY_REPLY</td><td>0x10</td><td>ACKS</td></tr>
- * <tr><td></td><td></td><td>0xFF</td><td>(fragment frame, reserved)</td></tr>
+ * <tr><td>0x11</td><td>ROSTER</td><td>0xFF</td><td>(fragment frame, reserved)</td></tr>
  * </table>
  */
 public enum MessageType {
@@ -40,7 +40,8 @@ public enum MessageType {
     INVOCATION_RESULT(0x0D),
     LEAVE(0x0E),
     STATUS(0x0F),
-    ACKS(0x10);
+    ACKS(0x10),
+    ROSTER(0x11);
 
     private static final MessageType[] BY_CODE = new MessageType[256];
 

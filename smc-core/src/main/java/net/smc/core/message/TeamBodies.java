@@ -56,6 +56,8 @@ final class TeamBodies {
                     w.string8(p.uri());
                     w.i32(p.version());
                 }
+                w.i64(m.epoch());
+                ValueCodec.writeList(m.handover(), w);
             },
             TeamBodies::readRoleAssignment);
 
@@ -90,8 +92,26 @@ final class TeamBodies {
             (m, w) -> w.string8(m.reason()),
             r -> new Leave(r.string8("reason", WireFormat.MAX_TEXT)));
 
+    static final BodyCodec<Roster> ROSTER = new BodyCodec<>(MessageType.ROSTER, Roster.class,
+            (m, w) -> {
+                w.string8(m.mission());
+                w.i64(m.epoch());
+                w.u8(m.backups().size());
+                for (String b : m.backups()) {
+                    w.string8(b);
+                }
+                w.u16(m.members().size());
+                for (Roster.Entry e : m.members()) {
+                    w.string8(e.vehicle());
+                    w.string8(e.address());
+                    w.string8(e.role());
+                    w.i32(e.slot());
+                }
+            },
+            TeamBodies::readRoster);
+
     static final List<BodyCodec<?>> ALL = List.of(DISCOVERY, DISCOVERY_REPLY, CAPABILITY_REQUEST, CAPABILITY_REPLY,
-            ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, STATUS, LEAVE);
+            ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, STATUS, LEAVE, ROSTER);
 
     private static RoleAssignment readRoleAssignment(WireReader r) throws DecodeException {
         String mission = r.name("mission");
@@ -103,6 +123,25 @@ final class TeamBodies {
         for (int i = 0; i < n; i++) {
             policies.add(new PolicyRef(r.string8("policy uri", WireFormat.MAX_URI), r.i32("policy version")));
         }
-        return new RoleAssignment(mission, role, identity, parent, policies);
+        long epoch = r.i64("epoch");
+        List<Object> handover = ValueCodec.readList(r, "handover");
+        return new RoleAssignment(mission, role, identity, parent, policies, epoch, handover);
+    }
+
+    private static Roster readRoster(WireReader r) throws DecodeException {
+        String mission = r.name("mission");
+        long epoch = r.i64("epoch");
+        int nb = r.count("backups", Roster.MAX_BACKUPS, 1);
+        List<String> backups = new ArrayList<>(nb);
+        for (int i = 0; i < nb; i++) {
+            backups.add(r.string8("backup", WireFormat.MAX_SENDER));
+        }
+        int nm = r.count16("members", Roster.MAX_MEMBERS, 4);
+        List<Roster.Entry> members = new ArrayList<>(nm);
+        for (int i = 0; i < nm; i++) {
+            members.add(new Roster.Entry(r.string8("member.vehicle", WireFormat.MAX_SENDER),
+                    r.string8("member.address", WireFormat.MAX_TEXT), r.name("member.role"), r.i32("member.slot")));
+        }
+        return new Roster(mission, epoch, backups, members);
     }
 }

@@ -111,7 +111,15 @@ final class WireReader {
      */
     int count(String field, int max, int minBytes) throws DecodeException {
         requireLength(1, field);
-        int n = buf[pos++] & 0xFF;
+        return checkCount(field, buf[pos++] & 0xFF, max, minBytes);
+    }
+
+    /** A two-byte element count, checked as {@link #count} checks a one-byte one. */
+    int count16(String field, int max, int minBytes) throws DecodeException {
+        return checkCount(field, u16(field), max, minBytes);
+    }
+
+    private int checkCount(String field, int n, int max, int minBytes) throws DecodeException {
         if (n > max) {
             throw new DecodeException(RejectReason.OVERSIZED, field + " has " + n + " elements; at most " + max
                     + " are allowed");

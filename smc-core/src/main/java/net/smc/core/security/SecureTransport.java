@@ -28,7 +28,7 @@ import org.slf4j.LoggerFactory;
  * Which vehicle is at which address is learned from authenticated datagrams only (signed, or MAC'd
  * under a session). Same threading as the transport it wraps: one cell thread.
  */
-public final class SecureTransport implements Transport {
+public final class SecureTransport implements AuthenticatingTransport {
     static final int PROBES_PER_RETRY = 16;
     private static final Logger LOG = LoggerFactory.getLogger(SecureTransport.class);
 
@@ -130,11 +130,17 @@ public final class SecureTransport implements Transport {
         setAuthenticatedReceiver((sender, from, protection, payload) -> receiver.onDatagram(from, payload));
     }
 
+    @Override
+    public Optional<Credential> credentialOf(String peer) {
+        return endpoint.credentialOf(peer);
+    }
+
     /**
      * Registers the receiver of payloads, which learns who sent each.
      *
      * @throws IllegalStateException when a receiver is already set
      */
+    @Override
     public void setAuthenticatedReceiver(AuthenticatedReceiver receiver) {
         if (this.receiver != null) {
             throw new IllegalStateException("a receiver is already set on the secure transport at " + localAddress());

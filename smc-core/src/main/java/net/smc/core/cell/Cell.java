@@ -1,0 +1,405 @@
+package net.smc.core.cell;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.SplittableRandom;
+import java.util.function.Consumer;
+
+import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.comm.CommunicationManager;
+import net.smc.core.comm.SenderSettings;
+import net.smc.core.discovery.Discovery;
+import net.smc.core.message.Identity;
+import net.smc.core.message.MessageType;
+import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionRole;
+import net.smc.core.role.PolicySource;
+import net.smc.core.role.Role;
+import net.smc.core.role.RoleManager;
+import net.smc.core.router.MessageRouter;
+import net.smc.core.security.AuthenticatingTransport;
+import net.smc.core.security.Credential;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Scheduler;
+import net.smc.core.transport.Transport;
+import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyRepository;
+import net.smc.policy.RunResult;
+
+/**
+ * One vehicle's self-managed cell, wired: its policy engine, Role-Manager, capability description,
+ * Communication-Manager and team protocols, on an injected {@link Clock}, {@link Scheduler} and
+ * {@link Transport}. Start here to run a vehicle.
+ *
+ * <p>The engine holds what the paper's policies use: the event templates of
+ * {@code policy:/boot/events}, {@code root/discovery} (Table I's {@code uav:has:cap:auth:} and
+ * {@code fullCapReq:role:}), and, per role held, {@code root/role/<name>} with
+ * {@code reassign:scheme:} (Table II). The protocols raise {@code newUAV}, {@code UAVFailure},
+ * {@code handover} and {@code missionState} into it, and the policies decide.
+ *
+ * <pre>{@code
+ * Cell cell = Cell.builder("uav1", mission, capabilities.description())
+ *         .transport(transport).clock(sim).scheduler(sim).repository(repository)
+ *         .commander(true).seed(1).trace(events::add).build();
+ * cell.start();
+ * }</pre>
+ *
+ * <p>Sans-IO and single-threaded: call it, and let its transport and scheduler call it, on one
+ * thread. On an {@link AuthenticatingTransport} it believes only proven senders, and the discovery
+ * check accepts a vehicle only with a credential for it; on a plain transport (tests, benchmarks)
+ * it believes what envelopes claim.
+ */
+public final class Cell {
+    private final String vehicle;
+    private final Mission mission;
+    private final Slots slots;
+    private final net.smc.policy.Cell engine;
+    private final RoleManager roles;
+    private final CommunicationManager comm;
+    private final TeamProtocol protocol;
+    private final PolicyStore store = new PolicyStore();
+    private final List<Diagnostic> diagnostics = new ArrayList<>();
+    private final boolean commanding;
+    private boolean started;
+
+    private Cell(Builder b) {
+        this.vehicle = b.vehicle;
+        this.mission = b.mission;
+        this.commanding = b.commander;
+        Scheme scheme = b.scheme != null ? b.scheme
+                : mission.parameter("scheme").map(p -> Scheme.parse(String.valueOf(p.value()))).orElse(Scheme.DISTRIBUTED);
+        this.slots = new Slots(mission, scheme);
+        Timing timing = b.timing != null ? b.timing : Timing.of(mission);
+        SplittableRandom random = new SplittableRandom(b.seed);
+        Consumer<String> output = b.output;
+        this.engine = net.smc.policy.Cell.builder()
+                .clock(b.clock::nowMillis)
+                .random(random.split())
+                .repository(b.repository)
+                .output(output)
+                .errors(d -> {
+                    diagnostics.add(d);
+                    b.trace.accept(new CellEvent(b.clock.nowMillis(), vehicle, CellEvent.Kind.REJECTED,
+                            "policy error: " + d));
+                })
+                .build();
+        RunResult boot = engine.load("policy:/boot/events");
+        if (!boot.diagnostics().isEmpty()) {
+            throw new IllegalStateException("cell '" + vehicle + "' cannot boot: policy:/boot/events: " + boot.diagnostics());
+        }
+        MessageRouter router = new MessageRouter();
+        this.comm = CommunicationManager.builder(vehicle, b.transport, b.clock, b.scheduler)
+                .random(random.split()).router(router).settings(b.senderSettings).build();
+        AuthenticatingTransport auth = b.transport instanceof AuthenticatingTransport a ? a : null;
+        TeamProtocol.Host host = new TeamProtocol.Host() {
+            @Override
+            public void raise(String event, Object... values) {
+                engine.raise("root/event/" + event, values);
+            }
+
+            @Override
+            public void loadRole(String role, PolicyStore from) {
+                roles.load(roleOf(role, from));
+            }
+
+            @Override
+            public void withdrawRole(String role) {
+                if (roles.isLoaded(role)) {
+                    roles.withdraw(role);
+                }
+            }
+
+            @Override
+            public Object credentialOf(String peer) {
+                if (auth == null) {
+                    return "unauthenticated";
+                }
+                return auth.credentialOf(peer).map(c -> (Object) c).orElse("none");
+            }
+        };
+        this.protocol = new TeamProtocol(vehicle, slots, timing, comm, b.clock, b.scheduler, b.description, store, host,
+                b.trace, random.nextLong(timing.comTimeoutMillis()));
+        this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
+        new Discovery((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
+                .install(engine);
+        for (MessageType t : TeamProtocol.handledTypes()) {
+            router.register(protocol, t);
+        }
+        if (commanding) {
+            loadRepository(b.repository);
+        }
+    }
+
+    /** A builder for vehicle {@code vehicle} of {@code mission}, describing itself as {@code description}. */
+    public static Builder builder(String vehicle, Mission mission, CapabilityDescription description) {
+        return new Builder(vehicle, mission, description);
+    }
+
+    /** Starts receiving and ticking; the acting commander starts forming its team. */
+    public void start() {
+        if (started) {
+            throw new IllegalStateException("cell '" + vehicle + "' is already started");
+        }
+        started = true;
+        comm.start();
+        protocol.start(commanding);
+    }
+
+    /** Stops ticking and sending; the transport belongs to the caller. */
+    public void stop() {
+        protocol.stop();
+        comm.stop();
+    }
+
+    /** Leaves the team gracefully (tells parent and children, gives up every role). */
+    public void leave() {
+        protocol.leave();
+    }
+
+    /** Answers discovery again after {@link #leave()}. */
+    public void rejoin() {
+        protocol.rejoin();
+    }
+
+    /**
+     * Sets the state this vehicle reports to its parent with its heartbeats (its position, say):
+     * if it fails, the parent hands this over to its replacement. Numbers, strings, booleans and
+     * lists of them.
+     */
+    public void reportState(List<Object> state) {
+        protocol.reportState(state);
+    }
+
+    /** The state handed over with the last role this vehicle took (empty if none). */
+    public List<Object> handedOver() {
+        return protocol.handedOver();
+    }
+
+    public String vehicle() {
+        return vehicle;
+    }
+
+    public Mission mission() {
+        return mission;
+    }
+
+    public Slots slots() {
+        return slots;
+    }
+
+    public boolean isActingCommander() {
+        return protocol.acting();
+    }
+
+    /** Whether this cell's lease from its parent ran out (its roles do not count until renewed). */
+    public boolean isSuspended() {
+        return protocol.suspended();
+    }
+
+    public long epoch() {
+        return protocol.epoch();
+    }
+
+    public Optional<String> parent() {
+        return protocol.parent();
+    }
+
+    public Optional<String> commander() {
+        return protocol.commander();
+    }
+
+    /** The seats this vehicle holds, primary first. */
+    public List<Seat> seats() {
+        return protocol.seats();
+    }
+
+    public Optional<Identity> identity() {
+        return protocol.identity();
+    }
+
+    /** Children by vehicle id, with the seats each holds from this cell. */
+    public Map<String, List<Seat>> children() {
+        return protocol.children();
+    }
+
+    /** For the acting commander, the mission's state. */
+    public Optional<MissionState> missionState() {
+        return protocol.missionState();
+    }
+
+    /** For the acting commander, holders per role in its team. */
+    public Map<String, Integer> teamCounts() {
+        return protocol.subtreeCounts();
+    }
+
+    public boolean hasLeft() {
+        return protocol.left();
+    }
+
+    /** Messages the protocols refused, by message type. */
+    public Map<String, Long> rejected() {
+        return protocol.rejected();
+    }
+
+    /** Errors reported by policies since the cell started. */
+    public List<Diagnostic> diagnostics() {
+        return List.copyOf(diagnostics);
+    }
+
+    public CellView view() {
+        return protocol.view();
+    }
+
+    /** The policy engine, for tasks and tests that reach into it. */
+    public net.smc.policy.Cell engine() {
+        return engine;
+    }
+
+    public RoleManager roleManager() {
+        return roles;
+    }
+
+    public CommunicationManager communication() {
+        return comm;
+    }
+
+    /** The role a vehicle loads for {@code name}: the mission's policies as this cell holds them. */
+    private Role roleOf(String name, PolicyStore from) {
+        MissionRole r = slots.role(name);
+        Role.Builder b = Role.builder(name);
+        for (String uri : r.policies()) {
+            b.mission(PolicySource.text(uri, text(from, uri, name)));
+        }
+        for (String uri : r.authorisations()) {
+            b.authorisation(PolicySource.text(uri, text(from, uri, name)));
+        }
+        slots.managedRoles(name).forEach(b::manages);
+        return b.build();
+    }
+
+    private static String text(PolicyStore from, String uri, String role) {
+        return from.get(uri, PolicyStore.ANY_VERSION).orElseThrow(() -> new IllegalStateException("policy " + uri
+                + " of role '" + role + "' has not arrived")).text();
+    }
+
+    /** The repository holder reads every policy of the mission. */
+    private void loadRepository(PolicyRepository repository) {
+        if (repository == null) {
+            throw new IllegalStateException("the acting commander '" + vehicle + "' needs the policy repository");
+        }
+        for (MissionRole r : mission.roles()) {
+            r.policies().forEach(uri -> store.load(repository, uri));
+            r.authorisations().forEach(uri -> store.load(repository, uri));
+        }
+    }
+
+    /** The discovery check: a credential issued to that vehicle for this mission (proven by the transport). */
+    private boolean accepts(AuthenticatingTransport auth, String uav, Object credential) {
+        if (auth == null) {
+            return true;
+        }
+        return credential instanceof Credential c && c.vehicleId().equals(uav)
+                && (c.mission() == null || c.mission().isEmpty() || c.mission().equals(mission.instanceName()));
+    }
+
+    /** Collects what a {@link Cell} needs; transport, clock and scheduler are required. */
+    public static final class Builder {
+        private final String vehicle;
+        private final Mission mission;
+        private final CapabilityDescription description;
+        private Transport transport;
+        private Clock clock;
+        private Scheduler scheduler;
+        private PolicyRepository repository;
+        private boolean commander;
+        private Scheme scheme;
+        private Timing timing;
+        private long seed;
+        private Consumer<CellEvent> trace = e -> { };
+        private Consumer<String> output = line -> { };
+        private SenderSettings senderSettings = SenderSettings.DEFAULTS;
+
+        private Builder(String vehicle, Mission mission, CapabilityDescription description) {
+            this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
+            this.mission = Objects.requireNonNull(mission, "mission");
+            this.description = Objects.requireNonNull(description, "description");
+            if (!description.vehicle().equals(vehicle)) {
+                throw new IllegalArgumentException("capability description of '" + description.vehicle()
+                        + "' given to cell '" + vehicle + "'; a cell describes its own vehicle");
+            }
+        }
+
+        public Builder transport(Transport transport) {
+            this.transport = Objects.requireNonNull(transport, "transport");
+            return this;
+        }
+
+        public Builder clock(Clock clock) {
+            this.clock = Objects.requireNonNull(clock, "clock");
+            return this;
+        }
+
+        public Builder scheduler(Scheduler scheduler) {
+            this.scheduler = Objects.requireNonNull(scheduler, "scheduler");
+            return this;
+        }
+
+        /** The policy repository: boot policies come from it, and the commander serves the team from it. */
+        public Builder repository(PolicyRepository repository) {
+            this.repository = Objects.requireNonNull(repository, "repository");
+            return this;
+        }
+
+        /** Whether this vehicle is the acting commander from the start. */
+        public Builder commander(boolean commander) {
+            this.commander = commander;
+            return this;
+        }
+
+        /** Overrides the mission's {@code scheme} parameter (distributed by default). */
+        public Builder scheme(Scheme scheme) {
+            this.scheme = Objects.requireNonNull(scheme, "scheme");
+            return this;
+        }
+
+        /** Overrides the timing the mission's parameters give. */
+        public Builder timing(Timing timing) {
+            this.timing = Objects.requireNonNull(timing, "timing");
+            return this;
+        }
+
+        /** Seeds the cell's random choices (tick phase, retransmission jitter, the engine's random). */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /** Receives every decision of the team protocols. */
+        public Builder trace(Consumer<CellEvent> trace) {
+            this.trace = Objects.requireNonNull(trace, "trace");
+            return this;
+        }
+
+        /** Receives what policies print ({@code root print:}); discarded by default. */
+        public Builder output(Consumer<String> output) {
+            this.output = Objects.requireNonNull(output, "output");
+            return this;
+        }
+
+        public Builder senderSettings(SenderSettings settings) {
+            this.senderSettings = Objects.requireNonNull(settings, "settings");
+            return this;
+        }
+
+        public Cell build() {
+            if (transport == null || clock == null || scheduler == null || repository == null) {
+                throw new IllegalStateException("cell '" + vehicle + "' needs a transport, a clock, a scheduler and a"
+                        + " policy repository");
+            }
+            return new Cell(this);
+        }
+    }
+}

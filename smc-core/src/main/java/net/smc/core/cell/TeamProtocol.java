@@ -1,0 +1,1408 @@
+package net.smc.core.cell;
+
+import java.math.BigDecimal;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.function.Consumer;
+
+import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.comm.CommunicationManager;
+import net.smc.core.comm.DeliveryListener;
+import net.smc.core.comm.FailureReason;
+import net.smc.core.message.AssignmentResponse;
+import net.smc.core.message.CapabilityReply;
+import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.Discovery;
+import net.smc.core.message.DiscoveryReply;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Heartbeat;
+import net.smc.core.message.Identity;
+import net.smc.core.message.Invocation;
+import net.smc.core.message.Leave;
+import net.smc.core.message.Message;
+import net.smc.core.message.MessageType;
+import net.smc.core.message.PolicyRef;
+import net.smc.core.message.PolicyReply;
+import net.smc.core.message.PolicyRequest;
+import net.smc.core.message.RoleAssignment;
+import net.smc.core.message.RoleEvent;
+import net.smc.core.message.Roster;
+import net.smc.core.message.Status;
+import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionRole;
+import net.smc.core.router.Subscriber;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.Cancellable;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Scheduler;
+
+/**
+ * The team protocols of one cell: management-tree formation and role assignment (the paper's
+ * Algorithms 1 and 2), heartbeats and leases, failure detection and re-assignment, backup
+ * commanders, merging of partitioned teams, graceful leave. Sans-IO: it acts only on messages the
+ * Communication-Manager dispatches to it and on its own tick, on the cell's thread.
+ *
+ * <p>Policies decide, this class carries out: a discovery reply becomes a {@code newUAV} event and
+ * the role-assignment policy (Table I) asks {@link #requestFullCapability}; a silent child becomes a
+ * {@code UAVFailure} event and the re-assignment policy (Table II) asks {@link #reassign}. The rules
+ * of seats, identities and priorities are {@link Slots}'; the times are {@link Timing}'s. See
+ * <a href="doc-files/team-protocols.md">the team-protocols design note</a>.
+ */
+final class TeamProtocol implements Subscriber {
+    /** Heartbeats between unchanged subtree reports. */
+    private static final int REPORT_TICKS = 4;
+    private static final String SIZE = "#size";
+    private static final String HOSTED = "#hosted";
+
+    /** What the protocol needs of the rest of its cell. */
+    interface Host {
+        /** Raises an event into the cell's policy engine. */
+        void raise(String event, Object... values);
+
+        /** Loads a role (all or nothing); the message of the exception says why not. */
+        void loadRole(String role, PolicyStore store) throws Exception;
+
+        /** Withdraws a role if it is loaded. */
+        void withdrawRole(String role);
+
+        /** The credential a peer authenticated with, as the discovery check wants it. */
+        Object credentialOf(String vehicle);
+    }
+
+    private final String self;
+    private final String missionId;
+    private final Slots slots;
+    private final Timing timing;
+    private final CommunicationManager comm;
+    private final Clock clock;
+    private final Scheduler scheduler;
+    private final CapabilityDescription description;
+    private final PolicyStore store;
+    private final Host host;
+    private final Consumer<CellEvent> trace;
+    private final long tickPhaseMillis;
+
+    // Where this cell stands.
+    private boolean acting;
+    private long epoch;
+    private String commander;
+    private Parent parent;
+    private boolean suspended;
+    private boolean left;
+    private final List<Seat> seats = new ArrayList<>();
+    private Identity identity;
+    private Incoming incoming;
+    private List<Object> handedOver = List.of();
+    private List<Object> reportedState = List.of();
+    private boolean stateChanged;
+    private int teamSize;
+
+    // As a manager.
+    private final Map<Seat, Owned> owned = new TreeMap<>();
+    private final Map<String, Child> children = new TreeMap<>();
+    private final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
+    private final Map<String, Heard> heard = new HashMap<>();
+    private final Map<String, List<Object>> handover = new HashMap<>();
+    private MissionState missionState;
+
+    // As a backup commander.
+    private Roster roster;
+    private int backupRank = -1;
+    private boolean prefetched;
+
+    // Timers and counts.
+    private Cancellable tickTimer;
+    private long ticks;
+    private boolean stopped;
+    private String lastReport = "";
+    private final Map<String, Long> rejected = new TreeMap<>();
+
+    private record Parent(String vehicle, Address address) {
+    }
+
+    private record Incoming(String from, Address address, long envelopeId, RoleAssignment assignment, long sinceMillis) {
+    }
+
+    private record Heard(CapabilitySummary summary, long atMillis) {
+    }
+
+    private static final class PendingCapability {
+        final Set<String> roles = new LinkedHashSet<>();
+        final long sinceMillis;
+        boolean reassignment;
+
+        PendingCapability(long sinceMillis) {
+            this.sinceMillis = sinceMillis;
+        }
+    }
+
+    /** One seat this cell owns: who holds it, or who is being given it. */
+    private static final class Owned {
+        String holder;
+        String pendingFor;
+        long pendingSince;
+    }
+
+    private static final class Child {
+        final String vehicle;
+        Address address;
+        long lastHeard;
+        List<Seat> seats = List.of();
+        CapabilityDescription description;
+        List<Object> state = List.of();
+        Map<String, Integer> subtree;
+        int size = 1;
+        int hosted;
+
+        Child(String vehicle) {
+            this.vehicle = vehicle;
+        }
+    }
+
+    TeamProtocol(String self, Slots slots, Timing timing, CommunicationManager comm, Clock clock, Scheduler scheduler,
+                 CapabilityDescription description, PolicyStore store, Host host, Consumer<CellEvent> trace,
+                 long tickPhaseMillis) {
+        this.self = self;
+        this.slots = slots;
+        this.missionId = slots.mission().instanceName();
+        this.timing = timing;
+        this.comm = comm;
+        this.clock = clock;
+        this.scheduler = scheduler;
+        this.description = description;
+        this.store = store;
+        this.host = host;
+        this.trace = trace;
+        this.tickPhaseMillis = tickPhaseMillis;
+    }
+
+    /** The message types this protocol handles. */
+    static List<MessageType> handledTypes() {
+        return List.of(MessageType.DISCOVERY, MessageType.DISCOVERY_REPLY, MessageType.CAPABILITY_REQUEST,
+                MessageType.CAPABILITY_REPLY, MessageType.ROLE_ASSIGNMENT, MessageType.ASSIGNMENT_RESPONSE,
+                MessageType.POLICY_REQUEST, MessageType.POLICY_REPLY, MessageType.HEARTBEAT, MessageType.STATUS,
+                MessageType.ROLE_EVENT, MessageType.LEAVE, MessageType.ROSTER, MessageType.INVOCATION);
+    }
+
+    // ---------------------------------------------------------------- life cycle
+
+    /** Starts ticking; as the acting commander when {@code commanding}. */
+    void start(boolean commanding) {
+        if (commanding) {
+            Seat seat = Slots.commanderSeat();
+            try {
+                host.loadRole(Mission.COMMANDER, store);
+            } catch (Exception e) {
+                throw new IllegalStateException("'" + self + "' cannot act as commander: " + e.getMessage(), e);
+            }
+            acting = true;
+            epoch = 0;
+            commander = self;
+            seats.add(seat);
+            identity = identityOf(seat);
+            recomputeOwnership();
+            emit(CellEvent.Kind.COMMANDING, "acting commander of " + missionId + " " + identity + ", scheme "
+                    + slots.scheme().name().toLowerCase());
+        }
+        tickTimer = scheduler.schedule(tickPhaseMillis, this::tick);
+    }
+
+    void stop() {
+        stopped = true;
+        if (tickTimer != null) {
+            tickTimer.cancel();
+        }
+    }
+
+    /** Leaves the team gracefully: tells parent and children, gives up every role, answers no discovery. */
+    void leave() {
+        left = true;
+        if (parent != null) {
+            send(parent.address(), new Leave("leaving the team"));
+        }
+        emit(CellEvent.Kind.LEFT, "leaves the team");
+        dropEverything("left the team");
+        if (acting) {
+            acting = false;
+        }
+    }
+
+    /** Ready to be discovered again after {@link #leave}. */
+    void rejoin() {
+        left = false;
+    }
+
+    private void tick() {
+        if (stopped) {
+            return;
+        }
+        ticks++;
+        long now = clock.nowMillis();
+        asChild(now);
+        if (!owned.isEmpty() || acting) {
+            asManager(now);
+        }
+        expireRequests(now);
+        tickTimer = scheduler.schedule(timing.comTimeoutMillis(), this::tick);
+    }
+
+    // ---------------------------------------------------------------- dispatch
+
+    @Override
+    public void receive(Envelope envelope) {
+        if (stopped || envelope.sender().equals(self)) {
+            return;
+        }
+        Message body = envelope.body();
+        if (body instanceof Discovery d) {
+            onDiscovery(envelope, d);
+        } else if (body instanceof DiscoveryReply r) {
+            onDiscoveryReply(envelope, r);
+        } else if (body instanceof CapabilityRequest r) {
+            onCapabilityRequest(envelope, r);
+        } else if (body instanceof CapabilityReply r) {
+            onCapabilityReply(envelope, r);
+        } else if (body instanceof RoleAssignment a) {
+            onRoleAssignment(envelope, a);
+        } else if (body instanceof AssignmentResponse r) {
+            onAssignmentResponse(envelope, r);
+        } else if (body instanceof PolicyRequest r) {
+            onPolicyRequest(envelope, r);
+        } else if (body instanceof PolicyReply r) {
+            onPolicyReply(envelope, r);
+        } else if (body instanceof Heartbeat h) {
+            onHeartbeat(envelope, h);
+        } else if (body instanceof Status st) {
+            onStatus(envelope, st);
+        } else if (body instanceof RoleEvent e) {
+            onRoleEvent(envelope, e);
+        } else if (body instanceof Leave l) {
+            onLeave(envelope, l);
+        } else if (body instanceof Roster r) {
+            onRoster(envelope, r);
+        } else if (body instanceof Invocation i) {
+            onInvocation(envelope, i);
+        } else {
+            reject(envelope, "no handler for " + body.type());
+        }
+    }
+
+    // ---------------------------------------------------------------- Algorithm 1: discovery
+
+    private void onDiscovery(Envelope env, Discovery d) {
+        if (!d.mission().equals(missionId)) {
+            return;
+        }
+        if (acting && d.role().equals(Mission.COMMANDER)) {
+            meetCommander(env.sender(), d.epoch());
+            return;
+        }
+        if (!free() || left) {
+            return; // Algorithm 1, line 9: a vehicle with a parent ignores discovery
+        }
+        address(env.sender()).ifPresent(a -> send(a, new DiscoveryReply(env.id(), missionId, description.summary())));
+    }
+
+    /** Two acting commanders met: the one with the higher epoch, then the lower vehicle id, stays. */
+    private void meetCommander(String other, long otherEpoch) {
+        boolean otherWins = otherEpoch > epoch || (otherEpoch == epoch && other.compareTo(self) < 0);
+        if (!otherWins) {
+            return;
+        }
+        emit(CellEvent.Kind.STEPPED_DOWN, "meets commander " + other + " of epoch " + otherEpoch + " (own epoch "
+                + epoch + ") and steps down");
+        acting = false;
+        dropEverything("commander " + self + " stepped down for " + other);
+        commander = null;
+        epoch = 0;
+    }
+
+    private void onDiscoveryReply(Envelope env, DiscoveryReply r) {
+        if (owned.isEmpty() || !r.mission().equals(missionId)) {
+            return;
+        }
+        if (!r.summary().vehicle().equals(env.sender())) {
+            reject(env, "capability summary names vehicle '" + r.summary().vehicle() + "'");
+            return;
+        }
+        heard.put(env.sender(), new Heard(r.summary(), clock.nowMillis()));
+        if (children.containsKey(env.sender()) || !hasVacancy()) {
+            return;
+        }
+        // Table I decides whom to ask: newUAV(name uav lowLevelCap credential).
+        host.raise("newUAV", "newUAV", env.sender(), r.summary(), host.credentialOf(env.sender()));
+    }
+
+    /** Broadcasts a discovery naming this cell's primary role. */
+    private void discover() {
+        Seat primary = seats.get(0);
+        comm.broadcast(new Discovery(missionId, primary.role(), slots.level(primary.role()), epoch));
+    }
+
+    // ---------------------------------------------------------------- Algorithm 2: role assignment
+
+    /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
+    void requestFullCapability(String uav, String role) {
+        if (slots.mission().role(role).isEmpty()) {
+            emit(CellEvent.Kind.REJECTED, "policy asked for unknown role '" + role + "' for " + uav);
+            return;
+        }
+        if (owned.keySet().stream().noneMatch(s -> s.role().equals(role) && open(s))) {
+            return; // nothing to give for that role now
+        }
+        PendingCapability pending = capabilityRequests.get(uav);
+        if (pending != null) {
+            pending.roles.add(role);
+            return;
+        }
+        Optional<Address> to = address(uav);
+        if (to.isEmpty()) {
+            return;
+        }
+        pending = new PendingCapability(clock.nowMillis());
+        pending.roles.add(role);
+        capabilityRequests.put(uav, pending);
+        comm.send(to.get(), new CapabilityRequest(role), failureOnly(() -> capabilityRequests.remove(uav)));
+    }
+
+    private void onCapabilityRequest(Envelope env, CapabilityRequest r) {
+        boolean fromParent = parent != null && parent.vehicle().equals(env.sender());
+        if (!fromParent && (!free() || left)) {
+            return;
+        }
+        address(env.sender()).ifPresent(a -> comm.send(a, new CapabilityReply(env.id(), description)));
+    }
+
+    private void onCapabilityReply(Envelope env, CapabilityReply r) {
+        PendingCapability pending = capabilityRequests.remove(env.sender());
+        if (pending == null) {
+            return;
+        }
+        CapabilityDescription full = r.description();
+        if (!full.vehicle().equals(env.sender())) {
+            reject(env, "capability description names vehicle '" + full.vehicle() + "'");
+            return;
+        }
+        // Algorithm 2, line 3: the description must match the requirement of one of the roles.
+        Optional<Seat> seat = owned.keySet().stream()
+                .filter(s -> pending.roles.contains(s.role()) && open(s))
+                .filter(s -> slots.role(s.role()).requirement().isMetBy(full))
+                .min(this::preferVacant);
+        if (seat.isEmpty()) {
+            return;
+        }
+        Child existing = children.get(env.sender());
+        if (existing != null && !existing.seats.isEmpty()) {
+            return; // already a child: moves go through reassign
+        }
+        giveSeat(env.sender(), full, seat.get());
+    }
+
+    /** Vacant seats first, then seats a vehicle of another role hosts; by priority. */
+    private int preferVacant(Seat a, Seat b) {
+        int c = Boolean.compare(owned.get(a).holder != null, owned.get(b).holder != null);
+        return c != 0 ? c : slots.compare(a, b);
+    }
+
+    /** Whether a seat could go to a newly found vehicle: vacant, or only hosted, and nobody is being given it. */
+    private boolean open(Seat seat) {
+        Owned o = owned.get(seat);
+        return o != null && o.pendingFor == null && (o.holder == null || hosted(seat, o.holder));
+    }
+
+    private boolean hasVacancy() {
+        return owned.keySet().stream().anyMatch(this::open);
+    }
+
+    /** Whether the holder of a secondary seat holds it beside its own primary role. */
+    private boolean hosted(Seat seat, String holder) {
+        if (!slots.role(seat.role()).isSecondary()) {
+            return false;
+        }
+        List<Seat> held = holder.equals(self) ? seats : children.containsKey(holder) ? children.get(holder).seats : List.of();
+        return held.stream().anyMatch(s -> !slots.role(s.role()).isSecondary());
+    }
+
+    /** Gives {@code seat} to {@code vehicle}, releasing it from a host first. */
+    private void giveSeat(String vehicle, CapabilityDescription full, Seat seat) {
+        Owned o = owned.get(seat);
+        if (o.holder != null) {
+            String hostVehicle = o.holder;
+            o.pendingFor = vehicle;
+            o.pendingSince = clock.nowMillis();
+            release(hostVehicle, seat, () -> {
+                o.pendingFor = null;
+                if (o.holder == null) {
+                    assign(vehicle, full, seat);
+                }
+            });
+            return;
+        }
+        assign(vehicle, full, seat);
+    }
+
+    /** Takes a hosted secondary seat back from its host (this cell, or a child), then runs {@code then}. */
+    private void release(String holder, Seat seat, Runnable then) {
+        if (holder.equals(self)) {
+            dropOwnSeat(seat, "makes way for a vehicle of its own");
+            owned.get(seat).holder = null;
+            then.run();
+            return;
+        }
+        Child child = children.get(holder);
+        if (child == null) {
+            owned.get(seat).holder = null;
+            then.run();
+            return;
+        }
+        comm.send(child.address, new Invocation(seat.role(), "release", List.of(BigDecimal.valueOf(seat.slot()))),
+                new DeliveryListener() {
+                    @Override
+                    public void delivered(long id) {
+                        Child c = children.get(holder);
+                        if (c != null) {
+                            c.seats = c.seats.stream().filter(s -> !s.equals(seat)).toList();
+                        }
+                        Owned o = owned.get(seat);
+                        if (o != null && holder.equals(o.holder)) {
+                            o.holder = null;
+                        }
+                        then.run();
+                    }
+
+                    @Override
+                    public void failed(long id, FailureReason reason) {
+                        Owned o = owned.get(seat);
+                        if (o != null) {
+                            o.pendingFor = null;
+                        }
+                    }
+                });
+    }
+
+    /** Sends the role assignment (Algorithm 1, lines 6 and 15, once accepted). */
+    private void assign(String vehicle, CapabilityDescription full, Seat seat) {
+        Optional<Address> to = address(vehicle);
+        Owned o = owned.get(seat);
+        if (to.isEmpty() || o == null) {
+            return;
+        }
+        List<Object> state = handover.getOrDefault(seat.role(), List.of());
+        RoleAssignment assignment = new RoleAssignment(missionId, seat.role(), identityOf(seat), self,
+                policyRefs(seat.role()), epoch, state);
+        o.pendingFor = vehicle;
+        o.pendingSince = clock.nowMillis();
+        Child child = children.computeIfAbsent(vehicle, Child::new);
+        child.address = to.get();
+        child.description = full;
+        if (child.seats.isEmpty()) {
+            child.lastHeard = clock.nowMillis();
+        }
+        emit(CellEvent.Kind.ASSIGNING, seat + " " + identityOf(seat) + " to " + vehicle
+                + (state.isEmpty() ? "" : " with handed-over state " + state));
+        comm.send(to.get(), assignment, failureOnly(() -> assignmentFailed(vehicle, seat, "not delivered")));
+    }
+
+    private void onAssignmentResponse(Envelope env, AssignmentResponse r) {
+        String vehicle = env.sender();
+        Optional<Seat> seat = owned.entrySet().stream()
+                .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
+                .map(Map.Entry::getKey).findFirst();
+        if (seat.isEmpty()) {
+            return;
+        }
+        if (!r.accepted()) {
+            assignmentFailed(vehicle, seat.get(), "refused: " + r.reason());
+            return;
+        }
+        Owned o = owned.get(seat.get());
+        o.pendingFor = null;
+        o.holder = vehicle;
+        Child child = children.computeIfAbsent(vehicle, Child::new);
+        child.address = address(vehicle).orElse(child.address);
+        child.lastHeard = clock.nowMillis();
+        List<Seat> before = child.seats;
+        child.seats = slots.afterAssign(before, seat.get()).stream().filter(owned::containsKey).toList();
+        for (Seat dropped : before) {
+            if (!child.seats.contains(dropped) && owned.containsKey(dropped) && vehicle.equals(owned.get(dropped).holder)) {
+                owned.get(dropped).holder = null;
+            }
+        }
+        handover.remove(seat.get().role());
+        heard.remove(vehicle);
+        emit(CellEvent.Kind.ASSIGNED, seat.get() + " to " + vehicle + " (now holds " + child.seats + ")");
+        sendRosterIfBackup();
+        updateMissionState();
+    }
+
+    private void assignmentFailed(String vehicle, Seat seat, String why) {
+        Owned o = owned.get(seat);
+        if (o == null || !vehicle.equals(o.pendingFor)) {
+            return;
+        }
+        o.pendingFor = null;
+        Child child = children.get(vehicle);
+        if (child != null && child.seats.isEmpty()) {
+            children.remove(vehicle);
+        }
+        emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
+    }
+
+    // ---------------------------------------------------------------- the assignee
+
+    private void onRoleAssignment(Envelope env, RoleAssignment a) {
+        String from = env.sender();
+        Optional<Address> back = address(from);
+        if (back.isEmpty()) {
+            return;
+        }
+        String refusal = refusal(from, a);
+        if (refusal != null) {
+            emit(CellEvent.Kind.REFUSED, a.role() + " from " + from + ": " + refusal);
+            comm.send(back.get(), new AssignmentResponse(env.id(), a.role(), false, refusal));
+            return;
+        }
+        if (incoming != null && incoming.envelopeId() == env.id() && incoming.from().equals(from)) {
+            return;
+        }
+        incoming = new Incoming(from, back.get(), env.id(), a, clock.nowMillis());
+        for (PolicyRef ref : a.policies()) {
+            if (!store.has(ref)) {
+                comm.send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        completeIfReady();
+    }
+
+    /** Why this cell will not take a role from {@code from}, or null when it will. */
+    private String refusal(String from, RoleAssignment a) {
+        if (!a.mission().equals(missionId)) {
+            return "assignment is for mission '" + a.mission() + "', this vehicle serves '" + missionId + "'";
+        }
+        if (slots.mission().role(a.role()).isEmpty() || a.role().equals(Mission.COMMANDER)) {
+            return "role '" + a.role() + "' cannot be assigned in mission '" + missionId + "'";
+        }
+        if (acting) {
+            return "this vehicle is the acting commander";
+        }
+        if (left) {
+            return "this vehicle has left the team";
+        }
+        if (parent != null && !parent.vehicle().equals(from)) {
+            return "this vehicle already has parent '" + parent.vehicle() + "'";
+        }
+        if (incoming != null && !incoming.from().equals(from)) {
+            return "this vehicle is taking a role from '" + incoming.from() + "'";
+        }
+        if (!slots.role(a.role()).requirement().isMetBy(description)) {
+            return "this vehicle lacks " + slots.role(a.role()).requirement().missingFrom(description).describe();
+        }
+        return null;
+    }
+
+    private void completeIfReady() {
+        Incoming in = incoming;
+        if (in == null || !in.assignment().policies().stream().allMatch(store::has)) {
+            return;
+        }
+        incoming = null;
+        RoleAssignment a = in.assignment();
+        Seat seat = new Seat(a.role(), slotOf(a));
+        boolean sameParent = parent != null && parent.vehicle().equals(in.from());
+        List<Seat> before = sameParent ? List.copyOf(seats) : List.of();
+        List<Seat> after = slots.afterAssign(before, seat);
+        if (before.stream().noneMatch(s -> s.role().equals(seat.role()))) {
+            try {
+                host.loadRole(seat.role(), store);
+            } catch (Exception e) {
+                String why = "loading role '" + seat.role() + "' failed: " + e.getMessage();
+                emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": " + why);
+                comm.send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), false, truncate(why)));
+                return;
+            }
+        }
+        Set<String> kept = new LinkedHashSet<>();
+        after.forEach(s -> kept.add(s.role()));
+        for (Seat s : before) {
+            if (!after.contains(s)) {
+                if (!kept.contains(s.role())) {
+                    host.withdrawRole(s.role());
+                }
+                emit(CellEvent.Kind.RELEASED, s + ": gives way to " + seat);
+            }
+        }
+        seats.clear();
+        seats.addAll(after);
+        parent = new Parent(in.from(), in.address());
+        epoch = a.epoch();
+        suspended = false;
+        lastStatusMillis = clock.nowMillis();
+        if (!slots.role(seat.role()).isSecondary() || identity == null) {
+            identity = a.identity();
+        }
+        recomputeOwnership();
+        emit(CellEvent.Kind.ACCEPTED, seat + " " + a.identity() + " from " + in.from() + ", holds " + seats);
+        comm.send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), true, ""));
+        if (!a.handover().isEmpty()) {
+            handedOver = a.handover();
+            host.raise("handover", "handover", a.role(), a.handover());
+        }
+    }
+
+    private int slotOf(RoleAssignment a) {
+        for (int s = 0; s < slots.optimal(a.role()); s++) {
+            if (slots.sequence(new Seat(a.role(), s)) == a.identity().sequence()) {
+                return s;
+            }
+        }
+        return 0;
+    }
+
+    private void onPolicyRequest(Envelope env, PolicyRequest r) {
+        Optional<PolicyStore.Entry> entry = store.get(r.uri(), r.version());
+        Optional<Address> back = address(env.sender());
+        if (entry.isEmpty() || back.isEmpty()) {
+            reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
+            return;
+        }
+        comm.send(back.get(), new PolicyReply(env.id(), r.uri(), entry.get().version(), entry.get().text()));
+    }
+
+    private void onPolicyReply(Envelope env, PolicyReply r) {
+        if (!store.accept(r.uri(), r.version(), r.text())) {
+            reject(env, "policy " + r.uri() + " arrived with version " + r.version() + " but its text has version "
+                    + PolicyStore.versionOf(r.text()));
+            return;
+        }
+        completeIfReady();
+    }
+
+    private void onInvocation(Envelope env, Invocation i) {
+        if (!i.operation().equals("release") || parent == null || !parent.vehicle().equals(env.sender())) {
+            reject(env, "invocation '" + i.operation() + "' on role '" + i.role() + "' is not accepted from "
+                    + env.sender());
+            return;
+        }
+        seats.stream().filter(s -> s.role().equals(i.role())).findFirst()
+                .ifPresent(s -> dropOwnSeat(s, "released by its parent"));
+    }
+
+    // ---------------------------------------------------------------- heartbeats, leases, failures
+
+    private long lastStatusMillis;
+    private int reportCountdown;
+
+    private void asChild(long now) {
+        if (parent == null) {
+            return;
+        }
+        if (seats.isEmpty()) {
+            send(parent.address(), new Leave("'" + self + "' holds no role any more"));
+            dropEverything("holds no role any more");
+            return;
+        }
+        long silent = now - lastStatusMillis;
+        if (backupRank >= 0 && commander != null && parent.vehicle().equals(commander)
+                && silent > timing.takeoverMillis(backupRank)) {
+            takeOver();
+            return;
+        }
+        if (silent > timing.orphanMillis()) {
+            emit(CellEvent.Kind.ORPHANED, "nothing from parent " + parent.vehicle() + " for " + silent + " ms; drops "
+                    + seats);
+            dropEverything("parent " + parent.vehicle() + " is lost");
+            return;
+        }
+        if (!suspended && silent > timing.leaseMillis()) {
+            suspended = true;
+            emit(CellEvent.Kind.SUSPENDED, "lease from " + parent.vehicle() + " ran out after " + silent + " ms");
+        }
+        send(parent.address(), new Heartbeat(seats.get(0).role(), epoch, 0));
+        String report = report();
+        if (stateChanged || !report.equals(lastReport) || --reportCountdown <= 0) {
+            reportCountdown = REPORT_TICKS;
+            lastReport = report;
+            stateChanged = false;
+            send(parent.address(), new RoleEvent(seats.get(0).role(), "report", reportValues()));
+        }
+    }
+
+    private void onHeartbeat(Envelope env, Heartbeat h) {
+        Child child = children.get(env.sender());
+        Optional<Address> back = address(env.sender());
+        if (back.isEmpty()) {
+            return;
+        }
+        if (child == null || child.seats.isEmpty()) {
+            send(back.get(), new Leave("'" + env.sender() + "' is not a child of '" + self + "'"));
+            return;
+        }
+        child.lastHeard = clock.nowMillis();
+        child.address = back.get();
+        send(back.get(), new Status(missionId, identity, commander == null ? self : commander, epoch, teamSize()));
+    }
+
+    private void onStatus(Envelope env, Status s) {
+        if (!s.mission().equals(missionId)) {
+            return;
+        }
+        String from = env.sender();
+        if (parent != null && parent.vehicle().equals(from)) {
+            lastStatusMillis = clock.nowMillis();
+            if (suspended) {
+                suspended = false;
+            }
+            epoch = s.epoch();
+            commander = s.commander();
+            teamSize = s.teamSize();
+            return;
+        }
+        // A backup that took over claims the old commander's children.
+        if (parent != null && parent.vehicle().equals(commander) && s.commander().equals(from) && s.epoch() > epoch) {
+            emit(CellEvent.Kind.ADOPTED, "new commander " + from + " of epoch " + s.epoch() + " replaces " + commander);
+            parent = new Parent(from, address(from).orElse(parent.address()));
+            commander = from;
+            epoch = s.epoch();
+            lastStatusMillis = clock.nowMillis();
+            suspended = false;
+            backupRank = -1;
+            roster = null;
+        }
+    }
+
+    private void onRoleEvent(Envelope env, RoleEvent e) {
+        Child child = children.get(env.sender());
+        if (child == null || !e.event().equals("report")) {
+            return;
+        }
+        Map<String, Integer> counts = new LinkedHashMap<>();
+        List<Object> state = List.of();
+        List<Object> v = e.values();
+        for (int i = 0; i + 1 < v.size(); i += 2) {
+            if (v.get(i) instanceof String key && key.equals("#state") && v.get(i + 1) instanceof List<?> l) {
+                state = List.copyOf(l);
+            } else if (v.get(i) instanceof String key && v.get(i + 1) instanceof BigDecimal n) {
+                counts.put(key, n.intValue());
+            }
+        }
+        child.size = counts.getOrDefault(SIZE, 1);
+        child.hosted = counts.getOrDefault(HOSTED, 0);
+        counts.remove(SIZE);
+        counts.remove(HOSTED);
+        child.subtree = counts;
+        child.state = state;
+        updateMissionState();
+    }
+
+    private void asManager(long now) {
+        for (Child child : List.copyOf(children.values())) {
+            if (!child.seats.isEmpty() && now - child.lastHeard > timing.failureTimeoutMillis()) {
+                failed(child, now - child.lastHeard);
+            }
+        }
+        fillSecondarySeats();
+        boolean open = hasVacancy();
+        if (open || (acting && ticks % Timing.BEACON_TICKS == 0)) {
+            discover();
+        }
+        if (acting && ticks % Timing.ROSTER_TICKS == 0) {
+            sendRoster();
+        }
+        updateMissionState();
+    }
+
+    /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */
+    private void failed(Child child, long silentMillis) {
+        children.remove(child.vehicle);
+        List<Seat> lost = child.seats;
+        for (Seat s : lost) {
+            Owned o = owned.get(s);
+            if (o != null && child.vehicle.equals(o.holder)) {
+                o.holder = null;
+            }
+            handover.put(s.role(), child.state);
+        }
+        emit(CellEvent.Kind.FAILURE, child.vehicle + " silent for " + silentMillis + " ms; held " + lost
+                + ", last state " + child.state);
+        for (Seat s : lost) {
+            // Table II decides: UAVFailure(name role uav state).
+            host.raise("UAVFailure", "UAVFailure", s.role(), child.vehicle, child.state);
+        }
+        sendRosterIfBackup();
+        updateMissionState();
+    }
+
+    /**
+     * Asked by a policy ({@code root/role/<manager> reassign: role scheme: s}): find the role a new
+     * holder. A free capable vehicle first; else a child moved from a role of lower priority; else
+     * the team contracts (the seat stays vacant, a secondary one returns to its primary's vehicle).
+     */
+    void reassign(String managingRole, String role, String scheme) {
+        Optional<Seat> seat = owned.keySet().stream().filter(s -> s.role().equals(role) && open(s)
+                && owned.get(s).holder == null).min(slots::compare);
+        if (seat.isEmpty()) {
+            emit(CellEvent.Kind.REASSIGNING, role + " (scheme " + scheme + "): no vacant seat");
+            return;
+        }
+        MissionRole wanted = slots.role(role);
+        long now = clock.nowMillis();
+        Optional<String> free = heard.entrySet().stream()
+                .filter(e -> now - e.getValue().atMillis() <= timing.failureTimeoutMillis())
+                .filter(e -> !children.containsKey(e.getKey()) && !capabilityRequests.containsKey(e.getKey()))
+                .filter(e -> wanted.requirement().isMetBy(e.getValue().summary()))
+                .map(Map.Entry::getKey).sorted().findFirst();
+        if (free.isPresent()) {
+            emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + ") to free vehicle " + free.get());
+            requestFullCapability(free.get(), role);
+            PendingCapability p = capabilityRequests.get(free.get());
+            if (p != null) {
+                p.reassignment = true;
+            }
+            return;
+        }
+        Optional<Child> movable = children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && c.description != null && wanted.requirement().isMetBy(c.description))
+                .filter(c -> c.seats.stream().allMatch(s -> slots.compare(s, seat.get()) > 0))
+                .filter(c -> owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)))
+                .max(Comparator.comparing((Child c) -> c.seats.get(0), slots::compare));
+        if (movable.isPresent()) {
+            Child c = movable.get();
+            emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + ") moves " + c.vehicle + " from "
+                    + c.seats);
+            assign(c.vehicle, c.description, seat.get());
+            return;
+        }
+        emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + "): no vehicle free; the team contracts");
+        fillSecondarySeats();
+    }
+
+    /** Vacant seats of secondary roles go to the vehicle holding their primary seat, if it may take them. */
+    private void fillSecondarySeats() {
+        for (Map.Entry<Seat, Owned> e : owned.entrySet()) {
+            Seat seat = e.getKey();
+            Owned o = e.getValue();
+            if (o.holder != null || o.pendingFor != null) {
+                continue;
+            }
+            Optional<Seat> hostSeat = slots.host(seat);
+            if (hostSeat.isEmpty()) {
+                continue;
+            }
+            if (seats.contains(hostSeat.get()) && !suspended) {
+                hostLocally(seat, o);
+            } else if (owned.containsKey(hostSeat.get()) && owned.get(hostSeat.get()).holder != null) {
+                Child c = children.get(owned.get(hostSeat.get()).holder);
+                if (c != null && c.description != null && canAlsoHold(c.seats, seat)
+                        && slots.role(seat.role()).requirement().isMetBy(c.description)) {
+                    assign(c.vehicle, c.description, seat);
+                }
+            }
+        }
+    }
+
+    private boolean canAlsoHold(List<Seat> held, Seat seat) {
+        if (held.stream().anyMatch(s -> s.role().equals(seat.role()))) {
+            return false;
+        }
+        List<String> names = new ArrayList<>();
+        held.forEach(s -> names.add(s.role()));
+        names.add(seat.role());
+        return slots.mission().allowsOnOneVehicle(names);
+    }
+
+    private void hostLocally(Seat seat, Owned o) {
+        if (!canAlsoHold(seats, seat) || !slots.role(seat.role()).requirement().isMetBy(description)
+                || !policiesHeld(seat.role())) {
+            return;
+        }
+        try {
+            host.loadRole(seat.role(), store);
+        } catch (Exception ex) {
+            emit(CellEvent.Kind.REJECTED, "cannot host " + seat + ": " + ex.getMessage());
+            return;
+        }
+        seats.add(seat);
+        o.holder = self;
+        recomputeOwnership();
+        emit(CellEvent.Kind.HOSTING, seat + " beside " + seats.get(0));
+        updateMissionState();
+    }
+
+    private boolean policiesHeld(String role) {
+        MissionRole r = slots.role(role);
+        return r.policies().stream().allMatch(u -> store.get(u, PolicyStore.ANY_VERSION).isPresent())
+                && r.authorisations().stream().allMatch(u -> store.get(u, PolicyStore.ANY_VERSION).isPresent());
+    }
+
+    private void onLeave(Envelope env, Leave l) {
+        String from = env.sender();
+        if (parent != null && parent.vehicle().equals(from)) {
+            emit(CellEvent.Kind.LEFT, "parent " + from + " says: " + l.reason());
+            dropEverything("parent " + from + " let go: " + l.reason());
+            return;
+        }
+        Child child = children.remove(from);
+        if (child != null) {
+            for (Seat s : child.seats) {
+                Owned o = owned.get(s);
+                if (o != null && from.equals(o.holder)) {
+                    o.holder = null;
+                }
+            }
+            emit(CellEvent.Kind.LEFT, "child " + from + " left (" + l.reason() + "); vacated " + child.seats);
+            updateMissionState();
+        }
+    }
+
+    // ---------------------------------------------------------------- backup commanders
+
+    private void sendRosterIfBackup() {
+        if (acting) {
+            sendRoster();
+        }
+    }
+
+    /** Replicates the team roster to the backups: the first children able to command, by identity. */
+    private void sendRoster() {
+        if (!acting || timing.backups() == 0) {
+            return;
+        }
+        MissionRole cdr = slots.role(Mission.COMMANDER);
+        List<Child> able = children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && c.description != null && cdr.requirement().isMetBy(c.description))
+                .sorted(Comparator.comparing((Child c) -> slots.sequence(c.seats.get(0))))
+                .limit(timing.backups()).toList();
+        if (able.isEmpty()) {
+            return;
+        }
+        List<Roster.Entry> members = new ArrayList<>();
+        for (Child c : children.values()) {
+            for (Seat s : c.seats) {
+                if (members.size() < Roster.MAX_MEMBERS && c.address != null) {
+                    members.add(new Roster.Entry(c.vehicle, c.address.toString(), s.role(), s.slot()));
+                }
+            }
+        }
+        Roster r = new Roster(missionId, epoch, able.stream().map(c -> c.vehicle).toList(), members);
+        for (Child b : able) {
+            send(b.address, r);
+        }
+    }
+
+    private void onRoster(Envelope env, Roster r) {
+        if (parent == null || !parent.vehicle().equals(env.sender()) || !env.sender().equals(commander)
+                || !r.mission().equals(missionId)) {
+            return;
+        }
+        roster = r;
+        backupRank = r.backups().indexOf(self);
+        if (backupRank >= 0 && !prefetched) {
+            prefetched = true;
+            for (String uri : allPolicyUris()) {
+                if (store.get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                    send(parent.address(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+                }
+            }
+        }
+    }
+
+    /** The commander went silent: this backup leads the team in the next epoch. */
+    private void takeOver() {
+        if (!policiesHeld(Mission.COMMANDER)) {
+            emit(CellEvent.Kind.REJECTED, "cannot take over: the commander's policies are not all here");
+            backupRank = -1;
+            return;
+        }
+        Roster r = roster;
+        String old = commander;
+        try {
+            host.loadRole(Mission.COMMANDER, store);
+        } catch (Exception e) {
+            emit(CellEvent.Kind.REJECTED, "cannot take over: " + e.getMessage());
+            backupRank = -1;
+            return;
+        }
+        for (Seat s : List.copyOf(seats)) {
+            dropOwnSeat(s, "takes over as commander");
+        }
+        seats.clear();
+        seats.add(Slots.commanderSeat());
+        identity = identityOf(Slots.commanderSeat());
+        acting = true;
+        parent = null;
+        suspended = false;
+        commander = self;
+        epoch = r.epoch() + 1;
+        backupRank = -1;
+        roster = null;
+        children.clear();
+        owned.clear();
+        recomputeOwnership();
+        long now = clock.nowMillis();
+        for (Roster.Entry e : r.members()) {
+            if (e.vehicle().equals(self) || e.vehicle().equals(old)) {
+                continue;
+            }
+            Seat seat = new Seat(e.role(), e.slot());
+            Owned o = owned.get(seat);
+            if (o == null) {
+                continue;
+            }
+            Address address;
+            try {
+                address = Address.parse(e.address());
+            } catch (IllegalArgumentException bad) {
+                continue;
+            }
+            comm.learnAddress(e.vehicle(), address);
+            Child c = children.computeIfAbsent(e.vehicle(), Child::new);
+            c.address = address;
+            c.lastHeard = now;
+            List<Seat> held = new ArrayList<>(c.seats);
+            held.add(seat);
+            c.seats = List.copyOf(held);
+            o.holder = e.vehicle();
+        }
+        emit(CellEvent.Kind.TOOK_OVER, "commander " + old + " silent; leads epoch " + epoch + " with children "
+                + children.keySet());
+        for (Child c : children.values()) {
+            send(c.address, new Status(missionId, identity, self, epoch, teamSize()));
+        }
+        discover();
+        updateMissionState();
+    }
+
+    // ---------------------------------------------------------------- seats and ownership
+
+    /** Gives up one of this cell's seats (and the role, unless another seat needs it). */
+    private void dropOwnSeat(Seat seat, String why) {
+        if (!seats.remove(seat)) {
+            return;
+        }
+        host.withdrawRole(seat.role());
+        Owned mine = owned.get(seat);
+        if (mine != null && self.equals(mine.holder)) {
+            mine.holder = null;
+        }
+        emit(CellEvent.Kind.RELEASED, seat + ": " + why);
+        recomputeOwnership();
+    }
+
+    /** Gives up every seat and child; becomes a free vehicle. */
+    private void dropEverything(String why) {
+        for (Child c : children.values()) {
+            if (c.address != null && !c.seats.isEmpty()) {
+                send(c.address, new Leave(why));
+            }
+        }
+        children.clear();
+        owned.clear();
+        capabilityRequests.clear();
+        for (Seat s : List.copyOf(seats)) {
+            host.withdrawRole(s.role());
+            emit(CellEvent.Kind.RELEASED, s + ": " + why);
+        }
+        seats.clear();
+        parent = null;
+        suspended = false;
+        identity = null;
+        backupRank = -1;
+        roster = null;
+        incoming = null;
+        missionState = null;
+        if (!acting) {
+            commander = null;
+        }
+    }
+
+    /** Re-derives the seats this cell owns from the seats it holds, keeping what it knew of them. */
+    private void recomputeOwnership() {
+        Set<Seat> now = new LinkedHashSet<>();
+        for (Seat s : seats) {
+            now.addAll(slots.ownedBy(s));
+        }
+        owned.keySet().retainAll(now);
+        for (Seat s : now) {
+            owned.computeIfAbsent(s, k -> new Owned());
+        }
+        for (Map.Entry<Seat, Owned> e : owned.entrySet()) {
+            boolean mine = seats.contains(e.getKey());
+            if (mine) {
+                e.getValue().holder = self;
+            } else if (self.equals(e.getValue().holder)) {
+                e.getValue().holder = null;
+            }
+        }
+        for (Child c : List.copyOf(children.values())) {
+            List<Seat> kept = c.seats.stream().filter(owned::containsKey).toList();
+            if (kept.size() != c.seats.size()) {
+                c.seats = kept;
+                if (kept.isEmpty()) {
+                    children.remove(c.vehicle);
+                    if (c.address != null) {
+                        send(c.address, new Leave("'" + self + "' no longer manages its seats"));
+                    }
+                }
+            }
+        }
+    }
+
+    private Identity identityOf(Seat seat) {
+        return new Identity(missionId, slots.level(seat.role()), slots.sequence(seat));
+    }
+
+    /** The policies of a role and of every role below it, as this cell holds them. */
+    private List<PolicyRef> policyRefs(String role) {
+        Set<String> uris = new LinkedHashSet<>();
+        List<String> pending = new ArrayList<>(List.of(role));
+        while (!pending.isEmpty()) {
+            MissionRole r = slots.role(pending.remove(0));
+            uris.addAll(r.policies());
+            uris.addAll(r.authorisations());
+            pending.addAll(slots.managedRoles(r.name()));
+        }
+        List<PolicyRef> refs = new ArrayList<>();
+        for (String uri : uris) {
+            store.ref(uri).ifPresent(refs::add);
+        }
+        return refs;
+    }
+
+    private List<String> allPolicyUris() {
+        Set<String> uris = new LinkedHashSet<>();
+        for (MissionRole r : slots.mission().roles()) {
+            uris.addAll(r.policies());
+            uris.addAll(r.authorisations());
+        }
+        return List.copyOf(uris);
+    }
+
+    // ---------------------------------------------------------------- counts and mission state
+
+    /** Holders per role in this cell's subtree, itself included (suspended holders do not count). */
+    Map<String, Integer> subtreeCounts() {
+        Map<String, Integer> counts = slots.count(suspended ? List.of() : seats);
+        for (Child c : children.values()) {
+            Map<String, Integer> sub = c.subtree != null ? c.subtree : slots.count(c.seats);
+            sub.forEach((role, n) -> counts.merge(role, n, Integer::sum));
+        }
+        return counts;
+    }
+
+    private int hostedCount() {
+        int n = suspended ? 0 : (int) seats.stream().filter(s -> hosted(s, self)).count();
+        for (Child c : children.values()) {
+            n += c.hosted;
+        }
+        return n;
+    }
+
+    private int teamSize() {
+        if (!acting) {
+            return teamSize;
+        }
+        int n = 1;
+        for (Child c : children.values()) {
+            n += c.size;
+        }
+        return n;
+    }
+
+    private int subtreeSize() {
+        int n = 1;
+        for (Child c : children.values()) {
+            n += c.size;
+        }
+        return n;
+    }
+
+    private String report() {
+        return subtreeCounts() + "/" + subtreeSize() + "/" + hostedCount();
+    }
+
+    private List<Object> reportValues() {
+        List<Object> v = new ArrayList<>();
+        subtreeCounts().forEach((role, n) -> {
+            if (n > 0) {
+                v.add(role);
+                v.add(BigDecimal.valueOf(n));
+            }
+        });
+        v.add(SIZE);
+        v.add(BigDecimal.valueOf(subtreeSize()));
+        v.add(HOSTED);
+        v.add(BigDecimal.valueOf(hostedCount()));
+        if (!reportedState.isEmpty() && v.size() < 60) {
+            v.add("#state");
+            v.add(reportedState);
+        }
+        return v;
+    }
+
+    private void updateMissionState() {
+        if (!acting) {
+            return;
+        }
+        Map<String, Integer> counts = subtreeCounts();
+        MissionState next = MissionState.OPTIMAL;
+        for (String role : slots.roles()) {
+            int n = counts.getOrDefault(role, 0);
+            MissionRole r = slots.role(role);
+            int min = role.equals(Mission.COMMANDER) ? 1 : r.minimal();
+            if (n < min) {
+                next = MissionState.FORMING;
+                break;
+            }
+            if (n < slots.optimal(role)) {
+                next = MissionState.RUNNING;
+            }
+        }
+        if (next == MissionState.OPTIMAL && hostedCount() > 0) {
+            next = MissionState.RUNNING;
+        }
+        if (next != missionState) {
+            missionState = next;
+            emit(CellEvent.Kind.MISSION_STATE, next + " " + counts + " hosted " + hostedCount());
+            host.raise("missionState", "missionState", next.name().toLowerCase());
+        }
+    }
+
+    // ---------------------------------------------------------------- state reported by tasks
+
+    /** Sets the state this vehicle reports to its parent (its position, say), handed over if it fails. */
+    void reportState(List<Object> state) {
+        reportedState = List.copyOf(state);
+        stateChanged = true;
+    }
+
+    List<Object> handedOver() {
+        return handedOver;
+    }
+
+    // ---------------------------------------------------------------- views
+
+    boolean acting() {
+        return acting;
+    }
+
+    boolean suspended() {
+        return suspended;
+    }
+
+    long epoch() {
+        return epoch;
+    }
+
+    Optional<String> parent() {
+        return parent == null ? Optional.empty() : Optional.of(parent.vehicle());
+    }
+
+    List<Seat> seats() {
+        return List.copyOf(seats);
+    }
+
+    Optional<Identity> identity() {
+        return Optional.ofNullable(identity);
+    }
+
+    Map<String, List<Seat>> children() {
+        Map<String, List<Seat>> out = new TreeMap<>();
+        children.forEach((v, c) -> {
+            if (!c.seats.isEmpty()) {
+                out.put(v, c.seats);
+            }
+        });
+        return out;
+    }
+
+    Optional<String> commander() {
+        return Optional.ofNullable(commander);
+    }
+
+    Optional<MissionState> missionState() {
+        return Optional.ofNullable(missionState);
+    }
+
+    /** Messages refused, by reason. */
+    Map<String, Long> rejected() {
+        return rejected;
+    }
+
+    boolean left() {
+        return left;
+    }
+
+    CellView view() {
+        Map<String, List<String>> kids = new TreeMap<>();
+        children().forEach((v, s) -> kids.put(v, s.stream().map(Seat::toString).toList()));
+        return new CellView(self, missionId, identity == null ? null : identity.toString(), epoch, commander, acting,
+                parent == null ? null : parent.vehicle(), suspended, seats.stream().map(Seat::toString).toList(), kids,
+                acting ? missionState : null, acting ? subtreeCounts() : Map.of(), clock.nowMillis());
+    }
+
+    // ---------------------------------------------------------------- helpers
+
+    /** Free: no parent, no role, not commanding, not taking a role. */
+    private boolean free() {
+        return parent == null && !acting && seats.isEmpty() && incoming == null;
+    }
+
+    private void expireRequests(long now) {
+        capabilityRequests.values().removeIf(p -> now - p.sinceMillis > timing.failureTimeoutMillis());
+        heard.values().removeIf(h -> now - h.atMillis() > 4 * timing.failureTimeoutMillis());
+        for (Map.Entry<Seat, Owned> e : owned.entrySet()) {
+            Owned o = e.getValue();
+            if (o.pendingFor != null && now - o.pendingSince > timing.failureTimeoutMillis()) {
+                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + timing.failureTimeoutMillis() + " ms");
+            }
+        }
+        if (incoming != null && now - incoming.sinceMillis() > timing.failureTimeoutMillis()) {
+            Incoming in = incoming;
+            incoming = null;
+            emit(CellEvent.Kind.REFUSED, in.assignment().role() + " from " + in.from() + ": its policies did not arrive");
+            send(in.address(), new AssignmentResponse(in.envelopeId(), in.assignment().role(), false,
+                    "policies did not arrive in time"));
+        }
+    }
+
+    private Optional<Address> address(String vehicle) {
+        return comm.addressOf(vehicle);
+    }
+
+    private void send(Address to, Message m) {
+        comm.send(to, m);
+    }
+
+    private void reject(Envelope env, String why) {
+        rejected.merge(env.type().name(), 1L, Long::sum);
+        emit(CellEvent.Kind.REJECTED, env.type() + " from " + env.sender() + ": " + why);
+    }
+
+    private void emit(CellEvent.Kind kind, String detail) {
+        trace.accept(new CellEvent(clock.nowMillis(), self, kind, detail));
+    }
+
+    private static String truncate(String s) {
+        return s.length() <= 255 ? s : s.substring(0, 252) + "...";
+    }
+
+    private static DeliveryListener failureOnly(Runnable onFailure) {
+        Objects.requireNonNull(onFailure);
+        return new DeliveryListener() {
+            @Override
+            public void failed(long id, FailureReason reason) {
+                onFailure.run();
+            }
+        };
+    }
+}

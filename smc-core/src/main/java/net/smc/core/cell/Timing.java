@@ -1,0 +1,83 @@
+package net.smc.core.cell;
+
+import net.smc.core.mission.Mission;
+import net.smc.core.mission.Parameter;
+
+/**
+ * The protocol's times, all derived from the mission's {@code comTimeout} (the heartbeat period,
+ * ms) and {@code failureTimeout} (silence after which a vehicle is taken for failed, ms), and the
+ * number of backup commanders.
+ *
+ * <ul>
+ *   <li>Every cell acts once per {@code comTimeout} (a "tick"): children send heartbeats, parents
+ *       answer each with a status, managers check their children and discover.</li>
+ *   <li>A parent declares a child failed after {@code failureTimeout} without a heartbeat.</li>
+ *   <li>A child's lease lasts {@code failureTimeout - comTimeout} from the last status of its parent:
+ *       it stops counting as a holder before the parent can give its seat to another vehicle,
+ *       provided one-way latency stays below {@code comTimeout}.</li>
+ *   <li>Backup {@code k} (from 0) takes over after {@code failureTimeout + (k + 1) * comTimeout} without
+ *       hearing the commander; a child drops its roles for good after
+ *       {@code failureTimeout + (backups + 2) * comTimeout}, so a take-over finds the team intact.</li>
+ *   <li>An acting commander beacons (broadcasts discovery) at least every {@code beaconTicks} ticks,
+ *       so two commanders that can hear each other meet within that time plus latency.</li>
+ * </ul>
+ */
+public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backups) {
+    /** Ticks between an acting commander's beacons when its team is complete. */
+    public static final int BEACON_TICKS = 4;
+    /** Ticks between roster updates to backups, when nothing changed. */
+    public static final int ROSTER_TICKS = 4;
+
+    public Timing {
+        if (comTimeoutMillis < 1) {
+            throw new IllegalArgumentException("comTimeout is " + comTimeoutMillis + " ms; it must be at least 1 ms");
+        }
+        if (failureTimeoutMillis < 3 * comTimeoutMillis) {
+            throw new IllegalArgumentException("failureTimeout is " + failureTimeoutMillis + " ms; it must be at least"
+                    + " three times comTimeout (" + comTimeoutMillis + " ms), or one lost heartbeat would look like a failure");
+        }
+        if (backups < 0 || backups > 8) {
+            throw new IllegalArgumentException("backups is " + backups + "; it must be 0 to 8");
+        }
+    }
+
+    /**
+     * The timing a mission gives: its {@code comTimeout} and {@code failureTimeout} parameters, and
+     * {@code backups} if it has one (else 1).
+     *
+     * @throws IllegalArgumentException naming the parameter when one is missing or not a number
+     */
+    public static Timing of(Mission mission) {
+        return new Timing(number(mission, "comTimeout"), number(mission, "failureTimeout"),
+                mission.parameter("backups").map(p -> (int) asLong(p)).orElse(1));
+    }
+
+    private static long number(Mission mission, String name) {
+        Parameter p = mission.parameter(name).orElseThrow(() -> new IllegalArgumentException("mission '"
+                + mission.instanceName() + "' has no parameter '" + name + "'; the team protocols need it (ms)"));
+        return asLong(p);
+    }
+
+    private static long asLong(Parameter p) {
+        Object v = p.value();
+        if (v instanceof Number n) {
+            return n.longValue();
+        }
+        if (v instanceof java.time.Duration d) {
+            return d.toMillis();
+        }
+        throw new IllegalArgumentException("mission parameter '" + p.name() + "' is " + v + "; it must be a number of ms");
+    }
+
+    public long leaseMillis() {
+        return failureTimeoutMillis - comTimeoutMillis;
+    }
+
+    public long takeoverMillis(int rank) {
+        return failureTimeoutMillis + (rank + 1L) * comTimeoutMillis;
+    }
+
+    public long orphanMillis() {
+        return failureTimeoutMillis + (backups + 2L) * comTimeoutMillis;
+    }
+}
