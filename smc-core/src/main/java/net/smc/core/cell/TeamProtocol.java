@@ -872,7 +872,7 @@ final class TeamProtocol implements Subscriber {
         }
         Optional<Child> movable = children.values().stream()
                 .filter(c -> !c.seats.isEmpty() && c.description != null && wanted.requirement().isMetBy(c.description))
-                .filter(c -> c.seats.stream().allMatch(s -> slots.compare(s, seat.get()) > 0))
+                .filter(c -> c.seats.stream().allMatch(s -> !s.role().equals(role) && slots.compare(s, seat.get()) > 0))
                 .filter(c -> owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)))
                 .max(Comparator.comparing((Child c) -> c.seats.get(0), slots::compare));
         if (movable.isPresent()) {
