@@ -10,13 +10,14 @@ import picocli.CommandLine.Spec;
 
 /**
  * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}),
- * {@code shell} ({@link ShellCommand}), {@code validate} ({@link ValidateCommand}) and
- * {@code keys} ({@link KeysCommand}). Only {@link #main} touches the process (its streams and its
+ * {@code shell} ({@link ShellCommand}), {@code validate} ({@link ValidateCommand}),
+ * {@code keys} ({@link KeysCommand}) and {@code status} ({@link StatusCommand}). Only {@link #main} touches the process (its streams and its
  * exit status); {@link #commandLine(Io)} builds the same command on any streams.
  */
 @Command(name = "smc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         synopsisSubcommandLabel = "COMMAND",
-        description = "Runs PonderTalk policy scripts in a self-managed cell's policy engine, and checks missions.",
+        description = "Runs PonderTalk policy scripts in a self-managed cell's policy engine, checks missions, "
+                + "and asks running nodes for their status.",
         footer = {"%nRun 'smc COMMAND --help' for a command's options and exit statuses.",
             "Exit status 2 means a usage error; the commands explain their other statuses."})
 public final class Main implements Callable<Integer> {
@@ -36,6 +37,7 @@ public final class Main implements Callable<Integer> {
                 .addSubcommand(new KeysCommand(io))
                 .addSubcommand(new RunCommand(io))
                 .addSubcommand(new ShellCommand(io))
+                .addSubcommand(new StatusCommand(io))
                 .addSubcommand(new ValidateCommand(io));
         // After the subcommands are added, so that these settings reach them too.
         commandLine.setOut(io.stdout());
@@ -47,7 +49,7 @@ public final class Main implements Callable<Integer> {
     /** {@code smc} without a command. */
     @Override
     public Integer call() {
-        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate or keys");
+        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate, keys or status");
     }
 
     /** The version line of {@code smc --version} and the subcommands' {@code --version}. */

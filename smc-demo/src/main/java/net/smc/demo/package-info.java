@@ -4,7 +4,8 @@
  *
  * <p>Start at {@link net.smc.demo.Main}, the picocli root command; its subcommands are
  * {@code RunCommand} ({@code smc run FILE.p2 ...}) and {@code ShellCommand}
- * ({@code smc shell [FILE.p2 ...]}). Both set up their cell through {@code CommandCell} and
+ * ({@code smc shell [FILE.p2 ...]}); {@code StatusCommand} ({@code smc status --node ADDR:PORT}) asks a
+ * running node for its view. {@code run} and {@code shell} set up their cell through {@code CommandCell} and
  * {@code CellOptions}, and run it on a thread with a large stack ({@code LargeStack}). The
  * commands never touch {@code System.in/out/err} or call {@code System.exit}: the streams come in
  * an {@code Io}, and only {@code Main.main} ends the process, so tests drive the commands in-process.
