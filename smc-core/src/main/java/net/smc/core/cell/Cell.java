@@ -92,7 +92,8 @@ public final class Cell {
         }
         MessageRouter router = new MessageRouter();
         this.comm = CommunicationManager.builder(vehicle, b.transport, b.clock, b.scheduler)
-                .random(random.split()).router(router).settings(b.senderSettings).build();
+                .random(random.split()).router(router)
+                .settings(b.senderSettings != null ? b.senderSettings : timing.senderSettings()).build();
         AuthenticatingTransport auth = b.transport instanceof AuthenticatingTransport a ? a : null;
         TeamProtocol.Host host = new TeamProtocol.Host() {
             @Override
@@ -320,7 +321,7 @@ public final class Cell {
         private long seed;
         private Consumer<CellEvent> trace = e -> { };
         private Consumer<String> output = line -> { };
-        private SenderSettings senderSettings = SenderSettings.DEFAULTS;
+        private SenderSettings senderSettings;
 
         private Builder(String vehicle, Mission mission, CapabilityDescription description) {
             this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
@@ -389,6 +390,7 @@ public final class Cell {
             return this;
         }
 
+        /** Overrides the retransmission settings the timing gives ({@link Timing#senderSettings()}). */
         public Builder senderSettings(SenderSettings settings) {
             this.senderSettings = Objects.requireNonNull(settings, "settings");
             return this;

@@ -498,11 +498,11 @@ final class TeamProtocol implements Subscriber {
             return;
         }
         List<Object> state = handover.getOrDefault(seat.role(), List.of());
+        Child child = children.computeIfAbsent(vehicle, Child::new);
         RoleAssignment assignment = new RoleAssignment(missionId, seat.role(), identityOf(seat), self,
-                policyRefs(seat.role()), epoch, state);
+                policyRefs(seat.role()), epoch, state, child.seats.stream().map(Seat::toString).toList());
         o.pendingFor = vehicle;
         o.pendingSince = clock.nowMillis();
-        Child child = children.computeIfAbsent(vehicle, Child::new);
         child.address = to.get();
         child.description = full;
         if (child.seats.isEmpty()) {
@@ -510,7 +510,11 @@ final class TeamProtocol implements Subscriber {
         }
         emit(CellEvent.Kind.ASSIGNING, seat + " " + identityOf(seat) + " to " + vehicle
                 + (state.isEmpty() ? "" : " with handed-over state " + state));
-        comm.send(to.get(), assignment, failureOnly(() -> assignmentFailed(vehicle, seat, "not delivered")));
+        // Not delivered is not proof of not received (the Acks may be lost): the reservation stays
+        // until it expires, an answer comes, or the vehicle's heartbeat shows it took the seat.
+        comm.send(to.get(), assignment, failureOnly(() -> emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
+                + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
+                + timing.pendingMillis() + " ms")));
     }
 
     private void onAssignmentResponse(Envelope env, AssignmentResponse r) {
@@ -519,12 +523,39 @@ final class TeamProtocol implements Subscriber {
                 .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
                 .map(Map.Entry::getKey).findFirst();
         if (seat.isEmpty()) {
+            if (r.accepted()) {
+                revoke(vehicle, r.role());
+            }
             return;
         }
         if (!r.accepted()) {
             assignmentFailed(vehicle, seat.get(), "refused: " + r.reason());
             return;
         }
+        accepted(vehicle, seat.get());
+    }
+
+    /**
+     * A vehicle took a seat this cell no longer reserves for it (the reservation expired): it must
+     * give the role back, or it would hold a seat that may have gone to another.
+     */
+    private void revoke(String vehicle, String role) {
+        Child child = children.get(vehicle);
+        Optional<Address> to = address(vehicle);
+        if (to.isEmpty()) {
+            return;
+        }
+        emit(CellEvent.Kind.REJECTED, vehicle + " took " + role + " after its reservation expired; revoked");
+        if (child != null && !child.seats.isEmpty()) {
+            comm.send(to.get(), new Invocation(role, "release", List.of()));
+        } else {
+            send(to.get(), new Leave("'" + self + "' no longer holds a seat of '" + role + "' for '" + vehicle + "'"));
+        }
+    }
+
+    /** The vehicle took the seat: it is now a child holding it. */
+    private void accepted(String vehicle, Seat seatTaken) {
+        Optional<Seat> seat = Optional.of(seatTaken);
         Owned o = owned.get(seat.get());
         o.pendingFor = null;
         o.holder = vehicle;
@@ -620,7 +651,14 @@ final class TeamProtocol implements Subscriber {
         Seat seat = new Seat(a.role(), slotOf(a));
         boolean sameParent = parent != null && parent.vehicle().equals(in.from());
         List<Seat> before = sameParent ? List.copyOf(seats) : List.of();
-        List<Seat> after = slots.afterAssign(before, seat);
+        // What the parent says this vehicle keeps from it, then its own (hosted) seats that still fit.
+        List<Seat> kept = before.stream().filter(s -> a.keeps().contains(s.toString())).toList();
+        List<Seat> after = new ArrayList<>(slots.afterAssign(kept, seat));
+        for (Seat s : before) {
+            if (!kept.contains(s) && ownsItself(before, s) && canAlsoHold(after, s)) {
+                after.add(s);
+            }
+        }
         if (before.stream().noneMatch(s -> s.role().equals(seat.role()))) {
             try {
                 host.loadRole(seat.role(), store);
@@ -631,11 +669,11 @@ final class TeamProtocol implements Subscriber {
                 return;
             }
         }
-        Set<String> kept = new LinkedHashSet<>();
-        after.forEach(s -> kept.add(s.role()));
+        Set<String> keptRoles = new LinkedHashSet<>();
+        after.forEach(s -> keptRoles.add(s.role()));
         for (Seat s : before) {
             if (!after.contains(s)) {
-                if (!kept.contains(s.role())) {
+                if (!keptRoles.contains(s.role())) {
                     host.withdrawRole(s.role());
                 }
                 emit(CellEvent.Kind.RELEASED, s + ": gives way to " + seat);
@@ -657,6 +695,11 @@ final class TeamProtocol implements Subscriber {
             handedOver = a.handover();
             host.raise("handover", "handover", a.role(), a.handover());
         }
+    }
+
+    /** Whether {@code seat} is owned by another of {@code held}: a secondary seat this vehicle hosts itself. */
+    private boolean ownsItself(List<Seat> held, Seat seat) {
+        return slots.owner(seat).map(held::contains).orElse(false);
     }
 
     private int slotOf(RoleAssignment a) {
@@ -744,8 +787,15 @@ final class TeamProtocol implements Subscriber {
             return;
         }
         if (child == null || child.seats.isEmpty()) {
-            send(back.get(), new Leave("'" + env.sender() + "' is not a child of '" + self + "'"));
-            return;
+            Optional<Seat> reserved = owned.entrySet().stream()
+                    .filter(e -> env.sender().equals(e.getValue().pendingFor) && e.getKey().role().equals(h.role()))
+                    .map(Map.Entry::getKey).findFirst();
+            if (reserved.isEmpty()) {
+                send(back.get(), new Leave("'" + env.sender() + "' is not a child of '" + self + "'"));
+                return;
+            }
+            accepted(env.sender(), reserved.get()); // its answer was lost; its heartbeat says it took the seat
+            child = children.get(env.sender());
         }
         child.lastHeard = clock.nowMillis();
         child.address = back.get();
@@ -805,10 +855,13 @@ final class TeamProtocol implements Subscriber {
     }
 
     private void asManager(long now) {
-        for (Child child : List.copyOf(children.values())) {
-            if (!child.seats.isEmpty() && now - child.lastHeard > timing.failureTimeoutMillis()) {
-                failed(child, now - child.lastHeard);
-            }
+        List<Child> silent = children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && now - c.lastHeard > timing.failureTimeoutMillis())
+                // An assignment in flight may still make it keep its seats: wait for its answer or expiry.
+                .filter(c -> owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor))).toList();
+        silent.forEach(c -> children.remove(c.vehicle));
+        for (Child child : silent) {
+            failed(child, now - child.lastHeard);
         }
         fillSecondarySeats();
         boolean open = hasVacancy();
@@ -1362,8 +1415,8 @@ final class TeamProtocol implements Subscriber {
         heard.values().removeIf(h -> now - h.atMillis() > 4 * timing.failureTimeoutMillis());
         for (Map.Entry<Seat, Owned> e : owned.entrySet()) {
             Owned o = e.getValue();
-            if (o.pendingFor != null && now - o.pendingSince > timing.failureTimeoutMillis()) {
-                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + timing.failureTimeoutMillis() + " ms");
+            if (o.pendingFor != null && now - o.pendingSince > timing.pendingMillis()) {
+                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + timing.pendingMillis() + " ms");
             }
         }
         if (incoming != null && now - incoming.sinceMillis() > timing.failureTimeoutMillis()) {

@@ -69,6 +69,28 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
         throw new IllegalArgumentException("mission parameter '" + p.name() + "' is " + v + "; it must be a number of ms");
     }
 
+    /**
+     * Retransmission of the protocols' critical messages, paced by the heartbeat period: first try
+     * after comTimeout/5, doubling up to comTimeout, eight tries. A message to a silent peer is
+     * given up on within {@link net.smc.core.comm.SenderSettings#failureBoundMillis()} (about
+     * 6.5 comTimeouts).
+     */
+    public net.smc.core.comm.SenderSettings senderSettings() {
+        long first = Math.max(1, comTimeoutMillis / 5);
+        return new net.smc.core.comm.SenderSettings(first, 2.0, Math.max(first, comTimeoutMillis), 8, 0.2,
+                Math.max(30_000, 20 * failureTimeoutMillis), 65_536);
+    }
+
+    /**
+     * How long a manager keeps a seat reserved for a vehicle it sent an assignment to, without an
+     * answer: long enough for the assignment to arrive late, the vehicle to fetch policies for a
+     * failure timeout, and its answer to arrive late, so that a vehicle never holds a seat its
+     * manager has given to another.
+     */
+    public long pendingMillis() {
+        return 2 * senderSettings().failureBoundMillis() + failureTimeoutMillis + comTimeoutMillis;
+    }
+
     public long leaseMillis() {
         return failureTimeoutMillis - comTimeoutMillis;
     }

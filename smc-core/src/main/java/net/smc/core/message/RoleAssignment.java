@@ -5,15 +5,20 @@ import java.util.List;
 /**
  * Gives a vehicle a role: the mission, the role, the vehicle's identity in the team, its parent
  * (the vehicle id of its manager), the policies of the role (and of the roles it manages, which a
- * manager serves on to its own children), by URI and version, the team configuration's epoch, and
- * the state handed over from the role's previous holder (empty for a new role). The identity
- * belongs to the assignment's mission. Answered by an {@link AssignmentResponse}.
+ * manager serves on to its own children), by URI and version, the team configuration's epoch, the
+ * state handed over from the role's previous holder (empty for a new role), and the other seats
+ * ({@code role#slot}) the vehicle keeps from the same parent: whatever else it holds from that parent
+ * it gives up, so parent and child agree on what the child holds. The identity belongs to the
+ * assignment's mission. Answered by an {@link AssignmentResponse}.
  */
 public record RoleAssignment(String mission, String role, Identity identity, String parent, List<PolicyRef> policies,
-                             long epoch, List<Object> handover) implements Message {
-    /** An assignment in epoch 0 with nothing handed over. */
+                             long epoch, List<Object> handover, List<String> keeps) implements Message {
+    /** The most seats an assignment lets a vehicle keep. */
+    public static final int MAX_KEEPS = 32;
+
+    /** An assignment in epoch 0 with nothing handed over and nothing else kept. */
     public RoleAssignment(String mission, String role, Identity identity, String parent, List<PolicyRef> policies) {
-        this(mission, role, identity, parent, policies, 0, List.of());
+        this(mission, role, identity, parent, policies, 0, List.of(), List.of());
     }
 
     public RoleAssignment {
@@ -29,6 +34,10 @@ public record RoleAssignment(String mission, String role, Identity identity, Str
         policies = Fields.list("RoleAssignment.policies", policies, WireFormat.MAX_POLICIES);
         Fields.nonNegative("RoleAssignment.epoch", epoch);
         handover = Values.list("RoleAssignment.handover", handover);
+        keeps = Fields.list("RoleAssignment.keeps", keeps, MAX_KEEPS);
+        for (String k : keeps) {
+            Fields.string("RoleAssignment.keeps[]", k, 1, WireFormat.MAX_NAME + 11, "a seat role#slot");
+        }
     }
 
     @Override

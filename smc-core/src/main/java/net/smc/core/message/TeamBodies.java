@@ -58,6 +58,10 @@ final class TeamBodies {
                 }
                 w.i64(m.epoch());
                 ValueCodec.writeList(m.handover(), w);
+                w.u8(m.keeps().size());
+                for (String k : m.keeps()) {
+                    w.string8(k);
+                }
             },
             TeamBodies::readRoleAssignment);
 
@@ -125,7 +129,12 @@ final class TeamBodies {
         }
         long epoch = r.i64("epoch");
         List<Object> handover = ValueCodec.readList(r, "handover");
-        return new RoleAssignment(mission, role, identity, parent, policies, epoch, handover);
+        int nk = r.count("keeps", RoleAssignment.MAX_KEEPS, 2);
+        List<String> keeps = new ArrayList<>(nk);
+        for (int i = 0; i < nk; i++) {
+            keeps.add(r.string8("keep", WireFormat.MAX_NAME + 11));
+        }
+        return new RoleAssignment(mission, role, identity, parent, policies, epoch, handover, keeps);
     }
 
     private static Roster readRoster(WireReader r) throws DecodeException {

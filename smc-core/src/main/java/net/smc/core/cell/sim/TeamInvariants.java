@@ -26,9 +26,11 @@ import net.smc.core.transport.sim.LinkProfile;
  * <ol>
  *   <li>the parent relation among live cells has no cycle (each cell has at most one parent by
  *       construction);</li>
- *   <li>in each team (the cells attached to one acting commander: not suspended, and every cell on
- *       the way up attached too) no seat has two holders, so no role has more holders than its
- *       reasonably-optimal cardinality;</li>
+ *   <li>in each team (the cells attached to one acting commander: each holds a live lease from a
+ *       parent that lists it as a child, all the way up) no seat has two holders, so no role has
+ *       more holders than its reasonably-optimal cardinality;</li>
+ *   <li>a cell whose parent is gone or no longer lists it loses its lease within the lease time
+ *       plus two heartbeats;</li>
  *   <li>every attached holder is authenticated (not the rogue) and capable (its vehicle meets the
  *       role's requirement);</li>
  *   <li>two acting commanders that can hear each other do not stay so for longer than the merge
@@ -45,6 +47,7 @@ public final class TeamInvariants {
     private final TeamSimulation sim;
     private final long mergeBoundMillis;
     private final Map<String, Long> metSince = new HashMap<>();
+    private final Map<String, Long> danglingSince = new HashMap<>();
     private long checks;
 
     TeamInvariants(TeamSimulation sim, long mergeBoundMillis) {
@@ -108,6 +111,7 @@ public final class TeamInvariants {
                 }
             }
         }
+        checkDangling(cells, byId);
         checkRogues(cells);
         checkCommanders();
     }
@@ -125,7 +129,10 @@ public final class TeamInvariants {
         return teams;
     }
 
-    /** The acting commander a cell is attached to, if it is attached. */
+    /**
+     * The acting commander a cell is attached to, if it is attached: every cell on the way up holds
+     * a live lease (not suspended) from a parent that lists it as a child.
+     */
     private static Optional<String> root(Cell c, Map<String, Cell> byId) {
         Cell at = c;
         for (int depth = 0; depth < 64 && at != null; depth++) {
@@ -135,9 +142,40 @@ public final class TeamInvariants {
             if (at.isSuspended() || at.parent().isEmpty()) {
                 return Optional.empty();
             }
-            at = byId.get(at.parent().get());
+            Cell parent = byId.get(at.parent().get());
+            if (parent == null || !parent.children().containsKey(at.vehicle())) {
+                return Optional.empty();
+            }
+            at = parent;
         }
         return Optional.empty();
+    }
+
+    /**
+     * A cell whose parent is gone or no longer lists it (a dropped Leave, a crash) keeps a lease it
+     * should not: it must lose it within the lease plus two heartbeats.
+     */
+    private void checkDangling(List<Cell> cells, Map<String, Cell> byId) {
+        long now = sim.nowMillis();
+        long bound = net.smc.core.cell.Timing.of(sim.mission()).leaseMillis() + 2 * number("comTimeout");
+        Set<String> dangling = new HashSet<>();
+        for (Cell c : cells) {
+            if (c.isActingCommander() || c.isSuspended() || c.parent().isEmpty()) {
+                continue;
+            }
+            Cell parent = byId.get(c.parent().get());
+            if (parent != null && parent.children().containsKey(c.vehicle())) {
+                continue;
+            }
+            String key = c.vehicle() + "->" + c.parent().get();
+            dangling.add(key);
+            long since = danglingSince.computeIfAbsent(key, k -> now);
+            if (now - since > bound) {
+                fail(c.vehicle() + " has held a lease from " + c.parent().get() + " for " + (now - since)
+                        + " ms although that parent is gone or does not list it; the bound is " + bound + " ms");
+            }
+        }
+        danglingSince.keySet().retainAll(dangling);
     }
 
     private void checkRogues(List<Cell> honest) {
@@ -192,6 +230,17 @@ public final class TeamInvariants {
      */
     public boolean settled() {
         return unsettled().isEmpty();
+    }
+
+    /**
+     * Settled, or dissolved: no acting commander is left (the commander and every backup that
+     * could have taken over are gone) and every live honest vehicle is free again.
+     */
+    public boolean settledOrDissolved() {
+        if (!sim.commanders().isEmpty()) {
+            return settled();
+        }
+        return sim.cells().stream().allMatch(c -> c.seats().isEmpty() && c.parent().isEmpty());
     }
 
     /** Why the team has not settled (empty when it has). */

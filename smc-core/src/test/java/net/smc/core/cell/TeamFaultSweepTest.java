@@ -1,0 +1,36 @@
+package net.smc.core.cell;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.LongStream;
+import java.util.stream.Stream;
+
+import net.smc.core.cell.sim.FaultSchedule;
+import net.smc.core.cell.sim.InvariantViolation;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.TestFactory;
+
+/**
+ * Seeded fault schedules ({@link FaultSchedule}) on whole simulated teams: every invariant after
+ * every step, and the team settles once the faults stop. {@code smc.sweep.seeds} seeds from
+ * {@code smc.sweep.first} (1,000 from 1 by default; the soak task runs more). A failing seed prints
+ * itself and the end of its trace; run that seed alone to replay it.
+ */
+class TeamFaultSweepTest {
+    private static final long FIRST = Long.getLong("smc.sweep.first", 1);
+    private static final long SEEDS = Long.getLong("smc.sweep.seeds", 1_000);
+    private static final long FAULT_MILLIS = Long.getLong("smc.sweep.faultMillis", 30_000);
+
+    @TestFactory
+    Stream<DynamicTest> seeds() {
+        return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
+            List<String> faults = new ArrayList<>();
+            try {
+                new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, seed,
+                        FAULT_MILLIS).log(faults::add).run();
+            } catch (InvariantViolation v) {
+                throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+            }
+        }));
+    }
+}
