@@ -113,6 +113,12 @@ final class TeamProtocol implements Subscriber {
     private final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
     private final Map<String, Heard> heard = new HashMap<>();
     private final Map<String, List<Object>> handover = new HashMap<>();
+    /**
+     * Former children and assignees that may still name this cell as their parent (a Leave can be
+     * lost), until their lease would have run out: taking a role from one of them could close a
+     * cycle in the parent relation.
+     */
+    private final Map<String, Long> abandoned = new HashMap<>();
     private MissionState missionState;
 
     // As a backup commander.
@@ -307,8 +313,10 @@ final class TeamProtocol implements Subscriber {
             meetCommander(env.sender(), d.epoch());
             return;
         }
-        if (!free() || left) {
-            return; // Algorithm 1, line 9: a vehicle with a parent ignores discovery
+        boolean promotable = parent != null && !parent.vehicle().equals(env.sender())
+                && slots.managedRoles(d.role()).stream().anyMatch(r -> promotion(r, d.epoch()));
+        if ((!free() || left) && !promotable) {
+            return; // Algorithm 1, line 9: a vehicle with a parent ignores discovery (unless it could move up)
         }
         address(env.sender()).ifPresent(a -> send(a, new DiscoveryReply(env.id(), missionId, description.summary())));
     }
@@ -377,7 +385,7 @@ final class TeamProtocol implements Subscriber {
 
     private void onCapabilityRequest(Envelope env, CapabilityRequest r) {
         boolean fromParent = parent != null && parent.vehicle().equals(env.sender());
-        if (!fromParent && (!free() || left)) {
+        if (!fromParent && (!free() || left) && !promotion(r.role(), epoch)) {
             return;
         }
         address(env.sender()).ifPresent(a -> comm.send(a, new CapabilityReply(env.id(), description)));
@@ -523,10 +531,12 @@ final class TeamProtocol implements Subscriber {
                 .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
                 .map(Map.Entry::getKey).findFirst();
         if (seat.isEmpty()) {
-            if (r.accepted()) {
+            Child child = children.get(vehicle);
+            boolean known = child != null && child.seats.stream().anyMatch(s -> s.role().equals(r.role()));
+            if (r.accepted() && !known) {
                 revoke(vehicle, r.role());
             }
-            return;
+            return; // known: its heartbeat already told us it took the seat
         }
         if (!r.accepted()) {
             assignmentFailed(vehicle, seat.get(), "refused: " + r.reason());
@@ -629,7 +639,11 @@ final class TeamProtocol implements Subscriber {
         if (left) {
             return "this vehicle has left the team";
         }
-        if (parent != null && !parent.vehicle().equals(from)) {
+        Long until = abandoned.get(from);
+        if (until != null && clock.nowMillis() < until) {
+            return "'" + from + "' may still name this vehicle as its parent";
+        }
+        if (parent != null && !parent.vehicle().equals(from) && !promotion(a.role(), a.epoch())) {
             return "this vehicle already has parent '" + parent.vehicle() + "'";
         }
         if (incoming != null && !incoming.from().equals(from)) {
@@ -649,6 +663,17 @@ final class TeamProtocol implements Subscriber {
         incoming = null;
         RoleAssignment a = in.assignment();
         Seat seat = new Seat(a.role(), slotOf(a));
+        if (parent != null && !parent.vehicle().equals(in.from())) {
+            if (!promotion(a.role(), a.epoch())) {
+                emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": no longer free to move up");
+                comm.send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), false, "no longer free"));
+                return;
+            }
+            emit(CellEvent.Kind.RELEASED, "moves up from " + seats + " under " + parent.vehicle() + " to " + seat
+                    + " under " + in.from());
+            send(parent.address(), new Leave("'" + self + "' moves up to " + seat + " under '" + in.from() + "'"));
+            dropEverything("moves up to " + seat);
+        }
         boolean sameParent = parent != null && parent.vehicle().equals(in.from());
         List<Seat> before = sameParent ? List.copyOf(seats) : List.of();
         // What the parent says this vehicle keeps from it, then its own (hosted) seats that still fit.
@@ -695,6 +720,21 @@ final class TeamProtocol implements Subscriber {
             handedOver = a.handover();
             host.raise("handover", "handover", a.role(), a.handover());
         }
+    }
+
+    /**
+     * Whether this vehicle, attached to its team, would move up to {@code role}: a role before its
+     * own primary role in the mission's order (the surveyor before the detector), offered within its
+     * own team, that it is able to hold. A team short of a surveyor then takes one from among its
+     * detectors, as the reasonably-optimal configuration would.
+     */
+    private boolean promotion(String role, long offeredEpoch) {
+        if (parent == null || suspended || seats.isEmpty() || acting || offeredEpoch != epoch
+                || slots.mission().role(role).isEmpty() || role.equals(Mission.COMMANDER)) {
+            return false;
+        }
+        String mine = seats.get(0).role();
+        return slots.rank(role) < slots.rank(mine) && slots.role(role).requirement().isMetBy(description);
     }
 
     /** Whether {@code seat} is owned by another of {@code held}: a secondary seat this vehicle hosts itself. */
@@ -1153,11 +1193,14 @@ final class TeamProtocol implements Subscriber {
 
     /** Gives up every seat and child; becomes a free vehicle. */
     private void dropEverything(String why) {
+        long until = clock.nowMillis() + timing.orphanMillis();
         for (Child c : children.values()) {
             if (c.address != null && !c.seats.isEmpty()) {
                 send(c.address, new Leave(why));
             }
+            abandoned.put(c.vehicle, until);
         }
+        owned.values().stream().filter(o -> o.pendingFor != null).forEach(o -> abandoned.put(o.pendingFor, until));
         children.clear();
         owned.clear();
         capabilityRequests.clear();
@@ -1411,6 +1454,7 @@ final class TeamProtocol implements Subscriber {
     }
 
     private void expireRequests(long now) {
+        abandoned.values().removeIf(until -> now >= until);
         capabilityRequests.values().removeIf(p -> now - p.sinceMillis > timing.failureTimeoutMillis());
         heard.values().removeIf(h -> now - h.atMillis() > 4 * timing.failureTimeoutMillis());
         for (Map.Entry<Seat, Owned> e : owned.entrySet()) {
