@@ -826,12 +826,19 @@ final class TeamProtocol implements Subscriber {
         if (back.isEmpty()) {
             return;
         }
-        if (child == null || child.seats.isEmpty()) {
+        // The heartbeat names the child's primary role: it must be one this cell gave it.
+        if (child == null || child.seats.stream().noneMatch(s -> s.role().equals(h.role()))) {
             Optional<Seat> reserved = owned.entrySet().stream()
                     .filter(e -> env.sender().equals(e.getValue().pendingFor) && e.getKey().role().equals(h.role()))
                     .map(Map.Entry::getKey).findFirst();
             if (reserved.isEmpty()) {
-                send(back.get(), new Leave("'" + env.sender() + "' is not a child of '" + self + "'"));
+                if (child != null) {
+                    children.remove(env.sender());
+                    vacate(child);
+                    emit(CellEvent.Kind.REJECTED, env.sender() + " reports role " + h.role() + " but holds " + child.seats
+                            + " from this cell; let go");
+                }
+                send(back.get(), new Leave("'" + env.sender() + "' is not a child of '" + self + "' as " + h.role()));
                 return;
             }
             accepted(env.sender(), reserved.get()); // its answer was lost; its heartbeat says it took the seat
@@ -977,6 +984,16 @@ final class TeamProtocol implements Subscriber {
         }
         emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + "): no vehicle free; the team contracts");
         fillSecondarySeats();
+    }
+
+    /** Frees the seats this cell's table gives a child it no longer has. */
+    private void vacate(Child child) {
+        for (Seat s : child.seats) {
+            Owned o = owned.get(s);
+            if (o != null && child.vehicle.equals(o.holder)) {
+                o.holder = null;
+            }
+        }
     }
 
     /** Vacant seats of secondary roles go to the vehicle holding their primary seat, if it may take them. */
@@ -1125,6 +1142,7 @@ final class TeamProtocol implements Subscriber {
             backupRank = -1;
             return;
         }
+        Set<String> formerChildren = new LinkedHashSet<>(children.keySet());
         for (Seat s : List.copyOf(seats)) {
             dropOwnSeat(s, "takes over as commander");
         }
@@ -1143,8 +1161,8 @@ final class TeamProtocol implements Subscriber {
         recomputeOwnership();
         long now = clock.nowMillis();
         for (Roster.Entry e : r.members()) {
-            if (e.vehicle().equals(self) || e.vehicle().equals(old)) {
-                continue;
+            if (e.vehicle().equals(self) || e.vehicle().equals(old) || formerChildren.contains(e.vehicle())) {
+                continue; // this cell's own children were just let go; the roster's word on them is stale
             }
             Seat seat = new Seat(e.role(), e.slot());
             Owned o = owned.get(seat);

@@ -162,8 +162,11 @@ public final class FaultSchedule {
         long bound = settleBoundMillis(mission);
         boolean settled = sim.runUntil(() -> sim.invariants().settledOrDissolved(), bound);
         if (!settled) {
+            List<String> lines = new ArrayList<>(sim.trace());
+            lines.add("--- views at the end");
+            sim.cells().forEach(c -> lines.add(c.view().toJson()));
             throw new InvariantViolation("the team did not settle within " + bound + " ms after the faults stopped: "
-                    + sim.invariants().unsettled(), seed, sim.nowMillis(), sim.trace());
+                    + sim.invariants().unsettled(), seed, sim.nowMillis(), lines);
         }
         return new Outcome(seed, team.size() + joined, flat ? Scheme.CENTRALISED : Scheme.DISTRIBUTED, faults,
                 sim.nowMillis() - stopped, sim.invariants().checks());

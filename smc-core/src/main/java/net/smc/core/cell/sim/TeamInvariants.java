@@ -306,6 +306,9 @@ public final class TeamInvariants {
     }
 
     private void fail(String what) {
-        throw new InvariantViolation(what, sim.seed(), sim.nowMillis(), sim.trace());
+        List<String> lines = new ArrayList<>(sim.trace());
+        lines.add("--- views at the violation");
+        sim.cells().forEach(c -> lines.add(c.view().toJson()));
+        throw new InvariantViolation(what, sim.seed(), sim.nowMillis(), lines);
     }
 }
