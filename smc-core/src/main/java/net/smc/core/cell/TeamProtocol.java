@@ -169,6 +169,8 @@ final class TeamProtocol implements Subscriber {
         Map<String, Integer> subtree;
         int size = 1;
         int hosted;
+        /** Envelope id of the child's message that confirmed each seat (its ids only grow). */
+        final Map<Seat, Long> confirmedBy = new HashMap<>();
 
         Child(String vehicle) {
             this.vehicle = vehicle;
@@ -543,6 +545,10 @@ final class TeamProtocol implements Subscriber {
             return;
         }
         accepted(vehicle, seat.get());
+        Child c = children.get(vehicle);
+        if (c != null) {
+            c.confirmedBy.put(seat.get(), env.id());
+        }
     }
 
     /**
@@ -843,6 +849,7 @@ final class TeamProtocol implements Subscriber {
             }
             accepted(env.sender(), reserved.get()); // its answer was lost; its heartbeat says it took the seat
             child = children.get(env.sender());
+            child.confirmedBy.put(reserved.get(), env.id());
         }
         child.lastHeard = clock.nowMillis();
         child.address = back.get();
@@ -874,6 +881,7 @@ final class TeamProtocol implements Subscriber {
             suspended = false;
             backupRank = -1;
             roster = null;
+            reportCountdown = 0;
         }
     }
 
@@ -888,6 +896,8 @@ final class TeamProtocol implements Subscriber {
         for (int i = 0; i + 1 < v.size(); i += 2) {
             if (v.get(i) instanceof String key && key.equals("#state") && v.get(i + 1) instanceof List<?> l) {
                 state = List.copyOf(l);
+            } else if (v.get(i) instanceof String key && key.equals("#seats") && v.get(i + 1) instanceof List<?> l) {
+                reconcile(child, env.id(), l);
             } else if (v.get(i) instanceof String key && v.get(i + 1) instanceof BigDecimal n) {
                 counts.put(key, n.intValue());
             }
@@ -899,6 +909,56 @@ final class TeamProtocol implements Subscriber {
         child.subtree = counts;
         child.state = state;
         updateMissionState();
+    }
+
+    /**
+     * Brings this cell's table in line with the seats a child says it holds (anti-entropy: answers,
+     * Leaves and rosters can be lost). A claimed seat this cell gave to nobody is adopted; one it gave
+     * to another is taken back from the child; a seat the table gives the child but the child no
+     * longer claims is vacated, unless the report is older than the answer that confirmed it.
+     */
+    private void reconcile(Child child, long reportId, List<?> claimedNames) {
+        Set<Seat> claimed = new LinkedHashSet<>();
+        for (Object o : claimedNames) {
+            if (o instanceof String name) {
+                int hash = name.lastIndexOf('#');
+                try {
+                    claimed.add(new Seat(name.substring(0, hash), Integer.parseInt(name.substring(hash + 1))));
+                } catch (RuntimeException bad) {
+                    emit(CellEvent.Kind.REJECTED, child.vehicle + " reports seat '" + name + "'; seats are role#slot");
+                }
+            }
+        }
+        List<Seat> mine = new ArrayList<>(child.seats);
+        for (Seat s : claimed) {
+            Owned o = owned.get(s);
+            if (o == null || child.vehicle.equals(o.holder)) {
+                continue;
+            }
+            if (child.vehicle.equals(o.pendingFor)) {
+                accepted(child.vehicle, s);
+                mine = new ArrayList<>(child.seats);
+            } else if (o.holder == null && o.pendingFor == null) {
+                o.holder = child.vehicle;
+                mine.add(s);
+                child.confirmedBy.put(s, reportId);
+                emit(CellEvent.Kind.ASSIGNED, s + " adopted: " + child.vehicle + " reports holding it");
+            } else {
+                emit(CellEvent.Kind.REJECTED, child.vehicle + " reports " + s + ", which this cell gives "
+                        + (o.holder != null ? o.holder : o.pendingFor) + "; taken back");
+                address(child.vehicle).ifPresent(a -> comm.send(a, new Invocation(s.role(), "release", List.of())));
+            }
+        }
+        for (Seat s : List.copyOf(mine)) {
+            if (!claimed.contains(s) && reportId > child.confirmedBy.getOrDefault(s, Long.MIN_VALUE)) {
+                mine.remove(s);
+                Owned o = owned.get(s);
+                if (o != null && child.vehicle.equals(o.holder)) {
+                    o.holder = null;
+                }
+            }
+        }
+        child.seats = List.copyOf(mine);
     }
 
     private void asManager(long now) {
@@ -1341,7 +1401,7 @@ final class TeamProtocol implements Subscriber {
     }
 
     private String report() {
-        return subtreeCounts() + "/" + subtreeSize() + "/" + hostedCount();
+        return subtreeCounts() + "/" + subtreeSize() + "/" + hostedCount() + "/" + seats;
     }
 
     private List<Object> reportValues() {
@@ -1356,6 +1416,8 @@ final class TeamProtocol implements Subscriber {
         v.add(BigDecimal.valueOf(subtreeSize()));
         v.add(HOSTED);
         v.add(BigDecimal.valueOf(hostedCount()));
+        v.add("#seats");
+        v.add(seats.stream().map(Seat::toString).toList());
         if (!reportedState.isEmpty() && v.size() < 60) {
             v.add("#state");
             v.add(reportedState);
