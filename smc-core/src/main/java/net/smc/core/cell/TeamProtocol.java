@@ -415,6 +415,9 @@ final class TeamProtocol implements Subscriber {
         if (existing != null && !existing.seats.isEmpty()) {
             return; // already a child: moves go through reassign
         }
+        if (owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
+            return; // already being given a seat
+        }
         giveSeat(env.sender(), full, seat.get());
     }
 
@@ -816,7 +819,8 @@ final class TeamProtocol implements Subscriber {
             suspended = true;
             emit(CellEvent.Kind.SUSPENDED, "lease from " + parent.vehicle() + " ran out after " + silent + " ms");
         }
-        send(parent.address(), new Heartbeat(seats.get(0).role(), epoch, 0));
+        // The heartbeat's state field carries the slot of the primary seat, so the parent knows the exact seat.
+        send(parent.address(), new Heartbeat(seats.get(0).role(), epoch, seats.get(0).slot()));
         String report = report();
         if (stateChanged || !report.equals(lastReport) || --reportCountdown <= 0) {
             reportCountdown = REPORT_TICKS;
@@ -832,11 +836,11 @@ final class TeamProtocol implements Subscriber {
         if (back.isEmpty()) {
             return;
         }
-        // The heartbeat names the child's primary role: it must be one this cell gave it.
-        if (child == null || child.seats.stream().noneMatch(s -> s.role().equals(h.role()))) {
-            Optional<Seat> reserved = owned.entrySet().stream()
-                    .filter(e -> env.sender().equals(e.getValue().pendingFor) && e.getKey().role().equals(h.role()))
-                    .map(Map.Entry::getKey).findFirst();
+        // The heartbeat names the child's primary seat: it must be one this cell gave it.
+        Seat primary = new Seat(h.role(), h.state());
+        if (child == null || !child.seats.contains(primary)) {
+            Optional<Seat> reserved = owned.containsKey(primary) && env.sender().equals(owned.get(primary).pendingFor)
+                    ? Optional.of(primary) : Optional.empty();
             if (reserved.isEmpty()) {
                 if (child != null) {
                     children.remove(env.sender());
