@@ -97,7 +97,17 @@ final class TeamProtocol implements Subscriber {
     private long epoch;
     private String commander;
     private Parent parent;
-    private boolean suspended;
+    /** The lease from the parent runs until then: the send time of the latest echoed heartbeat + the lease. */
+    private long leaseUntilMillis;
+    /** Whether the SUSPENDED event for the current lapse was emitted. */
+    private boolean lapseNoted;
+    /** Send times of recent heartbeats, by envelope id, to date the parent's echoes. */
+    private final Map<Long, Long> heartbeatSentAt = new LinkedHashMap<>(32, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
+            return size() > 64;
+        }
+    };
     private boolean left;
     private final List<Seat> seats = new ArrayList<>();
     private Identity identity;
@@ -169,6 +179,14 @@ final class TeamProtocol implements Subscriber {
         Map<String, Integer> subtree;
         int size = 1;
         int hosted;
+        /** Envelope id of the latest heartbeat heard from it, echoed in every status. */
+        long lastHeartbeat;
+        /**
+         * Whether its last report agreed with this cell's table. Its lease is renewed (its heartbeats
+         * echoed) only then, so a child that claims a seat given to another stops counting until it
+         * has given that seat back.
+         */
+        boolean consistent = true;
         /** Envelope id of the child's message that confirmed each seat (its ids only grow). */
         final Map<Seat, Long> confirmedBy = new HashMap<>();
 
@@ -717,8 +735,10 @@ final class TeamProtocol implements Subscriber {
         seats.addAll(after);
         parent = new Parent(in.from(), in.address());
         epoch = a.epoch();
-        suspended = false;
         lastStatusMillis = clock.nowMillis();
+        // The answer leaves now; the parent hears it later, so its failure timeout starts later still.
+        leaseUntilMillis = clock.nowMillis() + timing.leaseMillis();
+        lapseNoted = false;
         if (!slots.role(seat.role()).isSecondary() || identity == null) {
             identity = a.identity();
         }
@@ -738,7 +758,7 @@ final class TeamProtocol implements Subscriber {
      * detectors, as the reasonably-optimal configuration would.
      */
     private boolean promotion(String role, long offeredEpoch) {
-        if (parent == null || suspended || seats.isEmpty() || acting || offeredEpoch != epoch
+        if (parent == null || suspended() || seats.isEmpty() || acting || offeredEpoch != epoch
                 || slots.mission().role(role).isEmpty() || role.equals(Mission.COMMANDER)) {
             return false;
         }
@@ -815,12 +835,14 @@ final class TeamProtocol implements Subscriber {
             dropEverything("parent " + parent.vehicle() + " is lost");
             return;
         }
-        if (!suspended && silent > timing.leaseMillis()) {
-            suspended = true;
-            emit(CellEvent.Kind.SUSPENDED, "lease from " + parent.vehicle() + " ran out after " + silent + " ms");
+        if (suspended() && !lapseNoted) {
+            lapseNoted = true;
+            emit(CellEvent.Kind.SUSPENDED, "lease from " + parent.vehicle() + " ran out " + (now - leaseUntilMillis)
+                    + " ms ago; last status " + silent + " ms ago");
         }
         // The heartbeat's state field carries the slot of the primary seat, so the parent knows the exact seat.
-        send(parent.address(), new Heartbeat(seats.get(0).role(), epoch, seats.get(0).slot()));
+        long id = comm.send(parent.address(), new Heartbeat(seats.get(0).role(), epoch, seats.get(0).slot()));
+        heartbeatSentAt.put(id, now);
         String report = report();
         if (stateChanged || !report.equals(lastReport) || --reportCountdown <= 0) {
             reportCountdown = REPORT_TICKS;
@@ -857,7 +879,16 @@ final class TeamProtocol implements Subscriber {
         }
         child.lastHeard = clock.nowMillis();
         child.address = back.get();
-        send(back.get(), new Status(missionId, identity, commander == null ? self : commander, epoch, teamSize()));
+        child.lastHeartbeat = Math.max(child.lastHeartbeat, env.id());
+        sendStatus(child);
+    }
+
+    /** Tells a child the team's state, echoing its latest heartbeat heard (which renews its lease). */
+    private void sendStatus(Child child) {
+        if (child.address != null && identity != null) {
+            send(child.address, new Status(missionId, identity, commander == null ? self : commander, epoch,
+                    teamSize(), child.consistent ? child.lastHeartbeat : 0));
+        }
     }
 
     private void onStatus(Envelope env, Status s) {
@@ -867,8 +898,10 @@ final class TeamProtocol implements Subscriber {
         String from = env.sender();
         if (parent != null && parent.vehicle().equals(from)) {
             lastStatusMillis = clock.nowMillis();
-            if (suspended) {
-                suspended = false;
+            Long sentAt = heartbeatSentAt.get(s.echo());
+            if (sentAt != null && sentAt + timing.leaseMillis() > leaseUntilMillis) {
+                leaseUntilMillis = sentAt + timing.leaseMillis();
+                lapseNoted = false;
             }
             epoch = s.epoch();
             commander = s.commander();
@@ -882,7 +915,8 @@ final class TeamProtocol implements Subscriber {
             commander = from;
             epoch = s.epoch();
             lastStatusMillis = clock.nowMillis();
-            suspended = false;
+            // Seats granted by the old commander count again only once the new one has echoed a heartbeat.
+            leaseUntilMillis = clock.nowMillis();
             backupRank = -1;
             roster = null;
             reportCountdown = 0;
@@ -934,6 +968,7 @@ final class TeamProtocol implements Subscriber {
             }
         }
         List<Seat> mine = new ArrayList<>(child.seats);
+        boolean conflict = false;
         for (Seat s : claimed) {
             Owned o = owned.get(s);
             if (o == null || child.vehicle.equals(o.holder)) {
@@ -948,6 +983,7 @@ final class TeamProtocol implements Subscriber {
                 child.confirmedBy.put(s, reportId);
                 emit(CellEvent.Kind.ASSIGNED, s + " adopted: " + child.vehicle + " reports holding it");
             } else {
+                conflict = true;
                 emit(CellEvent.Kind.REJECTED, child.vehicle + " reports " + s + ", which this cell gives "
                         + (o.holder != null ? o.holder : o.pendingFor) + "; taken back");
                 address(child.vehicle).ifPresent(a -> comm.send(a, new Invocation(s.role(), "release", List.of())));
@@ -963,6 +999,7 @@ final class TeamProtocol implements Subscriber {
             }
         }
         child.seats = List.copyOf(mine);
+        child.consistent = !conflict;
     }
 
     private void asManager(long now) {
@@ -973,6 +1010,11 @@ final class TeamProtocol implements Subscriber {
         silent.forEach(c -> children.remove(c.vehicle));
         for (Child child : silent) {
             failed(child, now - child.lastHeard);
+        }
+        for (Child c : children.values()) {
+            if (!c.seats.isEmpty()) {
+                sendStatus(c);
+            }
         }
         fillSecondarySeats();
         boolean open = hasVacancy();
@@ -1072,7 +1114,7 @@ final class TeamProtocol implements Subscriber {
             if (hostSeat.isEmpty()) {
                 continue;
             }
-            if (seats.contains(hostSeat.get()) && !suspended) {
+            if (seats.contains(hostSeat.get()) && !suspended()) {
                 hostLocally(seat, o);
             } else if (owned.containsKey(hostSeat.get()) && owned.get(hostSeat.get()).holder != null) {
                 Child c = children.get(owned.get(hostSeat.get()).holder);
@@ -1215,7 +1257,6 @@ final class TeamProtocol implements Subscriber {
         identity = identityOf(Slots.commanderSeat());
         acting = true;
         parent = null;
-        suspended = false;
         commander = self;
         epoch = r.epoch() + 1;
         backupRank = -1;
@@ -1243,6 +1284,7 @@ final class TeamProtocol implements Subscriber {
             Child c = children.computeIfAbsent(e.vehicle(), Child::new);
             c.address = address;
             c.lastHeard = now;
+            c.consistent = false; // the roster may be stale: trust its seats once its own report agrees
             List<Seat> held = new ArrayList<>(c.seats);
             held.add(seat);
             c.seats = List.copyOf(held);
@@ -1292,7 +1334,6 @@ final class TeamProtocol implements Subscriber {
         }
         seats.clear();
         parent = null;
-        suspended = false;
         identity = null;
         backupRank = -1;
         roster = null;
@@ -1369,7 +1410,7 @@ final class TeamProtocol implements Subscriber {
 
     /** Holders per role in this cell's subtree, itself included (suspended holders do not count). */
     Map<String, Integer> subtreeCounts() {
-        Map<String, Integer> counts = slots.count(suspended ? List.of() : seats);
+        Map<String, Integer> counts = slots.count(suspended() ? List.of() : seats);
         for (Child c : children.values()) {
             Map<String, Integer> sub = c.subtree != null ? c.subtree : slots.count(c.seats);
             sub.forEach((role, n) -> counts.merge(role, n, Integer::sum));
@@ -1378,7 +1419,7 @@ final class TeamProtocol implements Subscriber {
     }
 
     private int hostedCount() {
-        int n = suspended ? 0 : (int) seats.stream().filter(s -> hosted(s, self)).count();
+        int n = suspended() ? 0 : (int) seats.stream().filter(s -> hosted(s, self)).count();
         for (Child c : children.values()) {
             n += c.hosted;
         }
@@ -1475,8 +1516,9 @@ final class TeamProtocol implements Subscriber {
         return acting;
     }
 
+    /** Whether the lease from the parent has run out: this cell's seats do not count until renewed. */
     boolean suspended() {
-        return suspended;
+        return parent != null && !acting && clock.nowMillis() > leaseUntilMillis;
     }
 
     long epoch() {
@@ -1526,7 +1568,7 @@ final class TeamProtocol implements Subscriber {
         Map<String, List<String>> kids = new TreeMap<>();
         children().forEach((v, s) -> kids.put(v, s.stream().map(Seat::toString).toList()));
         return new CellView(self, missionId, identity == null ? null : identity.toString(), epoch, commander, acting,
-                parent == null ? null : parent.vehicle(), suspended, seats.stream().map(Seat::toString).toList(), kids,
+                parent == null ? null : parent.vehicle(), suspended(), seats.stream().map(Seat::toString).toList(), kids,
                 acting ? missionState : null, acting ? subtreeCounts() : Map.of(), clock.nowMillis());
     }
 

@@ -10,11 +10,14 @@ import net.smc.core.mission.Parameter;
  *
  * <ul>
  *   <li>Every cell acts once per {@code comTimeout} (a "tick"): children send heartbeats, parents
- *       answer each with a status, managers check their children and discover.</li>
+ *       send each child a status (also in answer to each heartbeat), managers check their children
+ *       and discover.</li>
  *   <li>A parent declares a child failed after {@code failureTimeout} without a heartbeat.</li>
- *   <li>A child's lease lasts {@code failureTimeout - comTimeout} from the last status of its parent:
- *       it stops counting as a holder before the parent can give its seat to another vehicle,
- *       provided one-way latency stays below {@code comTimeout}.</li>
+ *   <li>A child's lease lasts {@code failureTimeout - comTimeout / 2} from the <em>sending</em> of
+ *       its latest heartbeat that a status echoed: the parent heard that heartbeat after it was
+ *       sent, so the child stops counting as a holder before the parent can give its seat to another
+ *       vehicle, whatever the latency (the half heartbeat covers clocks that run at slightly
+ *       different rates).</li>
  *   <li>Backup {@code k} (from 0) takes over after {@code failureTimeout + (k + 1) * comTimeout} without
  *       hearing the commander; a child drops its roles for good after
  *       {@code failureTimeout + (backups + 2) * comTimeout}, so a take-over finds the team intact.</li>
@@ -92,7 +95,7 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
     }
 
     public long leaseMillis() {
-        return failureTimeoutMillis - comTimeoutMillis;
+        return failureTimeoutMillis - comTimeoutMillis / 2;
     }
 
     public long takeoverMillis(int rank) {

@@ -84,12 +84,13 @@ final class TeamBodies {
                 w.string8(m.commander());
                 w.i64(m.epoch());
                 w.i32(m.teamSize());
+                w.i64(m.echo());
             },
             r -> {
                 String mission = r.name("mission");
                 Identity identity = new Identity(mission, r.i32("identity.level"), r.i32("identity.sequence"));
                 return new Status(mission, identity, r.string8("commander", WireFormat.MAX_SENDER), r.i64("epoch"),
-                        r.i32("teamSize"));
+                        r.i32("teamSize"), r.i64("echo"));
             });
 
     static final BodyCodec<Leave> LEAVE = new BodyCodec<>(MessageType.LEAVE, Leave.class,
