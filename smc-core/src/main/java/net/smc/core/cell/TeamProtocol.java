@@ -1017,6 +1017,7 @@ final class TeamProtocol implements Subscriber {
             }
         }
         fillSecondarySeats();
+        swapTowardsOptimal(now);
         boolean open = hasVacancy();
         if (open || (acting && ticks % Timing.BEACON_TICKS == 0)) {
             discover();
@@ -1116,11 +1117,58 @@ final class TeamProtocol implements Subscriber {
             }
             if (seats.contains(hostSeat.get()) && !suspended()) {
                 hostLocally(seat, o);
-            } else if (owned.containsKey(hostSeat.get()) && owned.get(hostSeat.get()).holder != null) {
-                Child c = children.get(owned.get(hostSeat.get()).holder);
+                continue;
+            }
+            // The seat's own host, else (when this cell owns the primary's seats too, as the
+            // centralised commander does) any holder of the primary role that may take it.
+            List<Seat> hosts = new ArrayList<>(List.of(hostSeat.get()));
+            owned.keySet().stream().filter(h -> h.role().equals(hostSeat.get().role()) && !h.equals(hostSeat.get()))
+                    .forEach(hosts::add);
+            for (Seat h : hosts) {
+                Owned ho = owned.get(h);
+                Child c = ho == null || ho.holder == null ? null : children.get(ho.holder);
                 if (c != null && c.description != null && canAlsoHold(c.seats, seat)
+                        && owned.values().stream().noneMatch(x -> c.vehicle.equals(x.pendingFor))
                         && slots.role(seat.role()).requirement().isMetBy(c.description)) {
                     assign(c.vehicle, c.description, seat);
+                    break;
+                }
+            }
+        }
+    }
+
+    /**
+     * A local improvement towards the reasonably-optimal configuration: an open seat (vacant, or
+     * hosted) that no free vehicle heard of can take goes to a child holding a seat of another role
+     * that a free vehicle can take; that seat is then refilled through discovery. So a surveyor-like
+     * vehicle detecting hazards becomes the relay, and the free detector the detector.
+     */
+    private void swapTowardsOptimal(long now) {
+        for (Seat open : owned.keySet().stream().filter(this::open).sorted(slots::compare).toList()) {
+            MissionRole wanted = slots.role(open.role());
+            List<CapabilitySummary> free = heard.entrySet().stream()
+                    .filter(e -> now - e.getValue().atMillis() <= timing.failureTimeoutMillis())
+                    .filter(e -> !children.containsKey(e.getKey()) && !capabilityRequests.containsKey(e.getKey()))
+                    .map(e -> e.getValue().summary()).toList();
+            if (free.isEmpty() || free.stream().anyMatch(f -> wanted.requirement().isMetBy(f))) {
+                continue; // nobody to swap with, or discovery will fill it directly
+            }
+            for (Child c : children.values()) {
+                if (c.seats.size() != 1 || c.description == null || !wanted.requirement().isMetBy(c.description)
+                        || owned.values().stream().anyMatch(x -> c.vehicle.equals(x.pendingFor))) {
+                    continue;
+                }
+                Seat held = c.seats.get(0);
+                if (held.role().equals(open.role()) || canAlsoHold(List.of(held), open)
+                        || slots.compare(held, open) < 0 && !slots.minimal(open)) {
+                    continue;
+                }
+                MissionRole current = slots.role(held.role());
+                if (free.stream().anyMatch(f -> current.requirement().isMetBy(f))) {
+                    emit(CellEvent.Kind.REASSIGNING, open + ": moves " + c.vehicle + " from " + held
+                            + ", which a free vehicle can take");
+                    giveSeat(c.vehicle, c.description, open);
+                    return;
                 }
             }
         }
