@@ -421,6 +421,11 @@ final class TeamProtocol implements Subscriber {
             reject(env, "capability description names vehicle '" + full.vehicle() + "'");
             return;
         }
+        Child known = children.get(env.sender());
+        if (known != null && !known.seats.isEmpty()) {
+            known.description = full;
+            return;
+        }
         // Algorithm 2, line 3: the description must match the requirement of one of the roles.
         Optional<Seat> seat = owned.keySet().stream()
                 .filter(s -> pending.roles.contains(s.role()) && open(s))
@@ -431,7 +436,8 @@ final class TeamProtocol implements Subscriber {
         }
         Child existing = children.get(env.sender());
         if (existing != null && !existing.seats.isEmpty()) {
-            return; // already a child: moves go through reassign
+            existing.description = full; // a child this cell learnt from a roster: now it knows what it can do
+            return;
         }
         if (owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
             return; // already being given a seat
@@ -1138,6 +1144,26 @@ final class TeamProtocol implements Subscriber {
     }
 
     /**
+     * A vacant seat no free vehicle can take goes to a child whose seats all come later in the
+     * mission's order (a vehicle moved from a lower-priority role, as re-assignment does after a
+     * failure): the surveyor's seat before the relay's.
+     */
+    private boolean promoteChild(Seat open) {
+        MissionRole wanted = slots.role(open.role());
+        Optional<Child> movable = children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && c.description != null && wanted.requirement().isMetBy(c.description))
+                .filter(c -> c.seats.stream().allMatch(s -> slots.rank(s.role()) > slots.rank(open.role())))
+                .filter(c -> owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)))
+                .max(Comparator.comparing((Child c) -> c.seats.get(0), slots::compare));
+        if (movable.isEmpty()) {
+            return false;
+        }
+        emit(CellEvent.Kind.REASSIGNING, open + ": moves " + movable.get().vehicle + " up from " + movable.get().seats);
+        assign(movable.get().vehicle, movable.get().description, open);
+        return true;
+    }
+
+    /**
      * A local improvement towards the reasonably-optimal configuration: an open seat (vacant, or
      * hosted) that no free vehicle heard of can take goes to a child holding a seat of another role
      * that a free vehicle can take; that seat is then refilled through discovery. So a surveyor-like
@@ -1150,8 +1176,14 @@ final class TeamProtocol implements Subscriber {
                     .filter(e -> now - e.getValue().atMillis() <= timing.failureTimeoutMillis())
                     .filter(e -> !children.containsKey(e.getKey()) && !capabilityRequests.containsKey(e.getKey()))
                     .map(e -> e.getValue().summary()).toList();
-            if (free.isEmpty() || free.stream().anyMatch(f -> wanted.requirement().isMetBy(f))) {
-                continue; // nobody to swap with, or discovery will fill it directly
+            if (free.stream().anyMatch(f -> wanted.requirement().isMetBy(f))) {
+                continue; // discovery will fill it directly
+            }
+            if (owned.get(open).holder == null && promoteChild(open)) {
+                return;
+            }
+            if (free.isEmpty()) {
+                continue; // nobody to swap with
             }
             for (Child c : children.values()) {
                 if (c.seats.size() != 1 || c.description == null || !wanted.requirement().isMetBy(c.description)
@@ -1340,6 +1372,11 @@ final class TeamProtocol implements Subscriber {
         }
         emit(CellEvent.Kind.TOOK_OVER, "commander " + old + " silent; leads epoch " + epoch + " with children "
                 + children.keySet());
+        for (Child c : children.values()) {
+            capabilityRequests.put(c.vehicle, new PendingCapability(now));
+            comm.send(c.address, new CapabilityRequest(c.seats.get(0).role()),
+                    failureOnly(() -> capabilityRequests.remove(c.vehicle)));
+        }
         for (Child c : children.values()) {
             send(c.address, new Status(missionId, identity, self, epoch, teamSize()));
         }

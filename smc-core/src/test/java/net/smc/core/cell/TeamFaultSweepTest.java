@@ -1,12 +1,14 @@
 package net.smc.core.cell;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
 
 import net.smc.core.cell.sim.FaultSchedule;
 import net.smc.core.cell.sim.InvariantViolation;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
 
@@ -21,13 +23,29 @@ class TeamFaultSweepTest {
     private static final long SEEDS = Long.getLong("smc.sweep.seeds", 1_000);
     private static final long FAULT_MILLIS = Long.getLong("smc.sweep.faultMillis", 30_000);
 
+    private static final List<FaultSchedule.Outcome> OUTCOMES = Collections.synchronizedList(new ArrayList<>());
+
+    @AfterAll
+    static void summary() {
+        if (OUTCOMES.isEmpty()) {
+            return;
+        }
+        long matched = OUTCOMES.stream().filter(FaultSchedule.Outcome::matchesPlan).count();
+        long[] settle = OUTCOMES.stream().mapToLong(FaultSchedule.Outcome::settledAfterMillis).sorted().toArray();
+        long checks = OUTCOMES.stream().mapToLong(FaultSchedule.Outcome::checks).sum();
+        System.out.printf("team fault sweep: %d seeds settled; settle time after faults median %d ms, p90 %d ms,"
+                        + " max %d ms; %d invariant checks; exactly the planner's configuration in %d (%.1f%%)%n",
+                OUTCOMES.size(), settle[settle.length / 2], settle[settle.length * 9 / 10], settle[settle.length - 1],
+                checks, matched, 100.0 * matched / OUTCOMES.size());
+    }
+
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
             List<String> faults = new ArrayList<>();
             try {
-                new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, seed,
-                        FAULT_MILLIS).log(faults::add).run();
+                OUTCOMES.add(new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY,
+                        seed, FAULT_MILLIS).log(faults::add).run());
             } catch (InvariantViolation v) {
                 throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
             }

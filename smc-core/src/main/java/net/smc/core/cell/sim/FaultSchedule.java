@@ -61,7 +61,12 @@ public final class FaultSchedule {
     }
 
     /** What the run did, for reports. */
-    public record Outcome(long seed, int vehicles, Scheme scheme, int faults, long settledAfterMillis, long checks) {
+    /**
+     * @param matchesPlan whether the settled team is exactly what the planner gives (see
+     *                    {@link TeamInvariants#matchesPlan()})
+     */
+    public record Outcome(long seed, int vehicles, Scheme scheme, int faults, long settledAfterMillis, long checks,
+                          boolean matchesPlan) {
     }
 
     public Outcome run() {
@@ -168,8 +173,9 @@ public final class FaultSchedule {
             throw new InvariantViolation("the team did not settle within " + bound + " ms after the faults stopped: "
                     + sim.invariants().unsettled(), seed, sim.nowMillis(), lines);
         }
+        boolean dissolved = sim.commanders().isEmpty();
         return new Outcome(seed, team.size() + joined, flat ? Scheme.CENTRALISED : Scheme.DISTRIBUTED, faults,
-                sim.nowMillis() - stopped, sim.invariants().checks());
+                sim.nowMillis() - stopped, sim.invariants().checks(), !dissolved && sim.invariants().matchesPlan());
     }
 
     private void note(TeamSimulation sim, String what) {

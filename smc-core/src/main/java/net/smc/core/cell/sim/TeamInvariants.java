@@ -38,10 +38,13 @@ import net.smc.core.transport.sim.LinkProfile;
  *   <li>a rogue vehicle holds nothing, and no honest cell names it as parent, child or commander.</li>
  * </ol>
  *
- * <p>Liveness ({@link #settled()}): one acting commander among live cells, and in its team every
- * role has the number of holders the {@link TeamPlanner} gives for the live honest vehicles, capped
- * by the seats the tree can manage (a detector's seat needs its surveyor's seat held: with one
- * surveyor left of two, one detector seat has no manager).
+ * <p>Liveness ({@link #settled()}): one acting commander among live cells; in its team every role
+ * has the number of holders the {@link TeamPlanner} gives for the live honest vehicles, capped by
+ * the seats the tree can manage (a detector's seat needs its surveyor's seat held: with one surveyor
+ * left of two, one detector seat has no manager); and the configuration is maximal: no free vehicle
+ * could take a vacant seat, or a secondary seat carried beside another role. (The planner may reach
+ * "a vehicle of its own for every role" by trading vehicles between subtrees, which managers that
+ * see only their own subtree cannot; {@link #matchesPlan()} tells whether a run got there too.)
  */
 public final class TeamInvariants {
     private final TeamSimulation sim;
@@ -268,13 +271,53 @@ public final class TeamInvariants {
         if (!have.equals(want)) {
             return "holders " + have + ", the live vehicles allow " + want;
         }
-        if (plan.optimalReached()) {
-            List<String> hosting = team.stream().filter(c -> c.seats().size() > 1).map(Cell::vehicle).toList();
-            if (!hosting.isEmpty()) {
-                return "the live vehicles allow every role a vehicle of its own, but " + hosting + " hold several";
+        // Maximal: no free vehicle is left idle that could take a vacant seat the tree can manage,
+        // or a secondary seat that a vehicle of another role carries beside its own.
+        Map<Seat, String> holder = new HashMap<>();
+        team.forEach(c -> c.seats().forEach(st -> holder.put(st, c.vehicle())));
+        for (Cell free : cells) {
+            if (!free.seats().isEmpty() || free.hasLeft() || free.isActingCommander()) {
+                continue;
+            }
+            SimVehicle v = sim.vehicle(free.vehicle());
+            for (Seat st : cdr.slots().all()) {
+                if (st.role().equals(Mission.COMMANDER)) {
+                    continue;
+                }
+                Optional<Seat> owner = cdr.slots().owner(st);
+                boolean manageable = owner.isEmpty() || held.contains(owner.get());
+                String h = holder.get(st);
+                boolean open = h == null ? manageable
+                        : byId.get(h).seats().size() > 1 && mission().role(st.role()).orElseThrow().isSecondary();
+                if (open && mission().role(st.role()).orElseThrow().requirement().isMetBy(v.description())) {
+                    return free.vehicle() + " is free and could take " + st
+                            + (h == null ? ", which is vacant" : ", which " + h + " carries beside its own role");
+                }
             }
         }
         return "";
+    }
+
+    /**
+     * Whether the team is exactly as the planner would have it: settled, and when the planner gives
+     * every role a vehicle of its own, so does the team.
+     */
+    public boolean matchesPlan() {
+        if (!settled()) {
+            return false;
+        }
+        Cell cdr = sim.commanders().get(0);
+        if (!plan(cdr.vehicle()).optimalReached()) {
+            return true;
+        }
+        Map<String, Cell> byId = new HashMap<>();
+        sim.cells().forEach(c -> byId.put(c.vehicle(), c));
+        return teams(sim.cells(), byId).getOrDefault(cdr.vehicle(), List.of()).stream()
+                .allMatch(c -> c.seats().size() == 1);
+    }
+
+    private Mission mission() {
+        return sim.mission();
     }
 
     /** Seats of {@code role} whose owning seat is held: the most holders the tree can manage now. */
