@@ -1020,6 +1020,12 @@ final class TeamProtocol implements Subscriber {
         for (Child c : children.values()) {
             if (!c.seats.isEmpty()) {
                 sendStatus(c);
+                if (c.description == null && !capabilityRequests.containsKey(c.vehicle) && c.address != null) {
+                    // A child known from a roster: learn what it can do, to move it if need be.
+                    capabilityRequests.put(c.vehicle, new PendingCapability(now));
+                    comm.send(c.address, new CapabilityRequest(c.seats.get(0).role()),
+                            failureOnly(() -> capabilityRequests.remove(c.vehicle)));
+                }
             }
         }
         fillSecondarySeats();
@@ -1372,11 +1378,7 @@ final class TeamProtocol implements Subscriber {
         }
         emit(CellEvent.Kind.TOOK_OVER, "commander " + old + " silent; leads epoch " + epoch + " with children "
                 + children.keySet());
-        for (Child c : children.values()) {
-            capabilityRequests.put(c.vehicle, new PendingCapability(now));
-            comm.send(c.address, new CapabilityRequest(c.seats.get(0).role()),
-                    failureOnly(() -> capabilityRequests.remove(c.vehicle)));
-        }
+
         for (Child c : children.values()) {
             send(c.address, new Status(missionId, identity, self, epoch, teamSize()));
         }
