@@ -258,4 +258,33 @@ class TeamScenariosTest {
         }
         assertEquals(traces.get(0), traces.get(1));
     }
+
+    @Test
+    void thePoliciesDecide_withTableIDeactivatedNoSurveyorIsAssigned() {
+        TeamSimulation sim = sim(15, SimVehicle.reconnaissance(2, 1, 0, 0));
+        sim.start();
+        sim.cell("cdr").engine().run("test", "root/role/commander/policy/assignSurveyor active: false.");
+        sim.run(10_000);
+        assertTrue(sim.cells().stream().noneMatch(c -> c.seats().stream().anyMatch(s -> s.role().equals("surveyor"))),
+                "a surveyor was assigned although the role-assignment policy is inactive");
+        assertTrue(sim.cell("a1").seats().stream().anyMatch(s -> s.role().equals("aggregator")),
+                "the aggregator policy still assigns");
+        sim.cell("cdr").engine().run("test", "root/role/commander/policy/assignSurveyor active: true.");
+        until(sim, () -> state(sim, "cdr").equals(Optional.of(MissionState.RUNNING)), 10_000, "the minimal configuration");
+    }
+
+    @Test
+    void aTeamOfTwoHundredCellsFormsAndRecoversFromACrash() {
+        List<SimVehicle> team = new ArrayList<>(SimVehicle.reconnaissance(40, 40, 60, 59));
+        TeamSimulation sim = sim(16, team);
+        sim.start();
+        until(sim, () -> state(sim, "cdr").equals(Optional.of(MissionState.OPTIMAL)), 20_000, "the optimal configuration");
+        settle(sim, 5_000);
+        assertEquals(200, sim.cells().size());
+        String surveyor = sim.cell("cdr").children().entrySet().stream()
+                .filter(e -> e.getValue().get(0).role().equals("surveyor")).map(Map.Entry::getKey).findFirst().orElseThrow();
+        sim.crash(surveyor);
+        until(sim, () -> sim.cell("cdr").children().values().stream().filter(v -> v.get(0).role().equals("surveyor"))
+                .count() == 2 && sim.invariants().settled(), 4 * FAILURE, "a new surveyor");
+    }
 }
