@@ -112,6 +112,8 @@ final class TeamProtocol implements Subscriber {
     private final List<Seat> seats = new ArrayList<>();
     private Identity identity;
     private Incoming incoming;
+    /** This cell's ancestors as its parent last told them: the parent first, the commander last. */
+    private List<String> ancestors = List.of();
     private List<Object> handedOver = List.of();
     private List<Object> reportedState = List.of();
     private boolean stateChanged;
@@ -537,7 +539,7 @@ final class TeamProtocol implements Subscriber {
         List<Object> state = handover.getOrDefault(seat.role(), List.of());
         Child child = children.computeIfAbsent(vehicle, Child::new);
         RoleAssignment assignment = new RoleAssignment(missionId, seat.role(), identityOf(seat), self,
-                policyRefs(seat.role()), epoch, state, child.seats.stream().map(Seat::toString).toList());
+                policyRefs(seat.role()), epoch, state, child.seats.stream().map(Seat::toString).toList(), ancestors);
         o.pendingFor = vehicle;
         o.pendingSince = clock.nowMillis();
         child.address = to.get();
@@ -672,6 +674,9 @@ final class TeamProtocol implements Subscriber {
         if (left) {
             return "this vehicle has left the team";
         }
+        if (a.ancestors().contains(self)) {
+            return "'" + from + "' descends from this vehicle; taking a role from it would close a cycle";
+        }
         Long until = abandoned.get(from);
         if (until != null && clock.nowMillis() < until) {
             return "'" + from + "' may still name this vehicle as its parent";
@@ -740,6 +745,7 @@ final class TeamProtocol implements Subscriber {
         seats.clear();
         seats.addAll(after);
         parent = new Parent(in.from(), in.address());
+        ancestors = lineage(in.from(), a.ancestors());
         epoch = a.epoch();
         lastStatusMillis = clock.nowMillis();
         // The answer leaves now; the parent hears it later, so its failure timeout starts later still.
@@ -770,6 +776,19 @@ final class TeamProtocol implements Subscriber {
         }
         String mine = seats.get(0).role();
         return slots.rank(role) < slots.rank(mine) && slots.role(role).requirement().isMetBy(description);
+    }
+
+    /** A parent followed by its own ancestors, cut to the most a message carries. */
+    private static List<String> lineage(String parentVehicle, List<String> above) {
+        List<String> chain = new ArrayList<>();
+        chain.add(parentVehicle);
+        for (String a : above) {
+            if (chain.size() == RoleAssignment.MAX_ANCESTORS) {
+                break;
+            }
+            chain.add(a);
+        }
+        return List.copyOf(chain);
     }
 
     /** Whether {@code seat} is owned by another of {@code held}: a secondary seat this vehicle hosts itself. */
@@ -893,7 +912,7 @@ final class TeamProtocol implements Subscriber {
     private void sendStatus(Child child) {
         if (child.address != null && identity != null) {
             send(child.address, new Status(missionId, identity, commander == null ? self : commander, epoch,
-                    teamSize(), child.consistent ? child.lastHeartbeat : 0));
+                    teamSize(), child.consistent ? child.lastHeartbeat : 0, ancestors));
         }
     }
 
@@ -912,12 +931,14 @@ final class TeamProtocol implements Subscriber {
             epoch = s.epoch();
             commander = s.commander();
             teamSize = s.teamSize();
+            ancestors = lineage(from, s.ancestors());
             return;
         }
         // A backup that took over claims the old commander's children.
         if (parent != null && parent.vehicle().equals(commander) && s.commander().equals(from) && s.epoch() > epoch) {
             emit(CellEvent.Kind.ADOPTED, "new commander " + from + " of epoch " + s.epoch() + " replaces " + commander);
             parent = new Parent(from, address(from).orElse(parent.address()));
+            ancestors = List.of(from);
             commander = from;
             epoch = s.epoch();
             lastStatusMillis = clock.nowMillis();
@@ -1343,6 +1364,7 @@ final class TeamProtocol implements Subscriber {
         identity = identityOf(Slots.commanderSeat());
         acting = true;
         parent = null;
+        ancestors = List.of();
         commander = self;
         epoch = r.epoch() + 1;
         backupRank = -1;
@@ -1421,6 +1443,7 @@ final class TeamProtocol implements Subscriber {
         }
         seats.clear();
         parent = null;
+        ancestors = List.of();
         identity = null;
         backupRank = -1;
         roster = null;

@@ -62,6 +62,7 @@ final class TeamBodies {
                 for (String k : m.keeps()) {
                     w.string8(k);
                 }
+                writeNames(m.ancestors(), w);
             },
             TeamBodies::readRoleAssignment);
 
@@ -85,12 +86,13 @@ final class TeamBodies {
                 w.i64(m.epoch());
                 w.i32(m.teamSize());
                 w.i64(m.echo());
+                writeNames(m.ancestors(), w);
             },
             r -> {
                 String mission = r.name("mission");
                 Identity identity = new Identity(mission, r.i32("identity.level"), r.i32("identity.sequence"));
                 return new Status(mission, identity, r.string8("commander", WireFormat.MAX_SENDER), r.i64("epoch"),
-                        r.i32("teamSize"), r.i64("echo"));
+                        r.i32("teamSize"), r.i64("echo"), readNames(r, "ancestors"));
             });
 
     static final BodyCodec<Leave> LEAVE = new BodyCodec<>(MessageType.LEAVE, Leave.class,
@@ -135,7 +137,24 @@ final class TeamBodies {
         for (int i = 0; i < nk; i++) {
             keeps.add(r.string8("keep", WireFormat.MAX_NAME + 11));
         }
-        return new RoleAssignment(mission, role, identity, parent, policies, epoch, handover, keeps);
+        return new RoleAssignment(mission, role, identity, parent, policies, epoch, handover, keeps,
+                readNames(r, "ancestors"));
+    }
+
+    private static void writeNames(List<String> names, WireWriter w) {
+        w.u8(names.size());
+        for (String n : names) {
+            w.string8(n);
+        }
+    }
+
+    private static List<String> readNames(WireReader r, String field) throws DecodeException {
+        int n = r.count(field, RoleAssignment.MAX_ANCESTORS, 2);
+        List<String> names = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            names.add(r.string8(field, WireFormat.MAX_SENDER));
+        }
+        return names;
     }
 
     private static Roster readRoster(WireReader r) throws DecodeException {

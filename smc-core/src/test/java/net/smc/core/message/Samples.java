@@ -117,9 +117,10 @@ final class Samples {
                 InvocationResult.failed(18, "no such operation"),
                 new Leave("shutting down"),
                 new Status("rescue", IDENTITY, "uav1", 7, 5),
+                new Status("rescue", IDENTITY, "uav1", 7, 5, 123_456_789L, List.of("uav0")),
                 new Acks(List.of(3L, Long.MIN_VALUE, 3L)),
                 new RoleAssignment("rescue", "surveyor", IDENTITY, "uav1", List.of(new PolicyRef("policy:/roles/s", 9)),
-                        4, List.of(new BigDecimal("3.5"), new BigDecimal("-7")), List.of("hdetector#0", "relay#1")),
+                        4, List.of(new BigDecimal("3.5"), new BigDecimal("-7")), List.of("hdetector#0", "relay#1"), List.of("uav0", "uav9")),
                 new Roster("rescue", 2, List.of("uav2", "uav3"), List.of(new Roster.Entry("uav2", "10.0.0.2:4000",
                         "surveyor", 0), new Roster.Entry("uav3", "10.0.0.3:4000", "aggregator", 0))),
                 new Roster("rescue", 0, List.of(), List.of()));
