@@ -121,8 +121,8 @@ public final class Cell {
                 return auth.credentialOf(peer).map(c -> (Object) c).orElse("none");
             }
         };
-        this.protocol = new TeamProtocol(vehicle, slots, timing, comm, b.clock, b.scheduler, b.description, store, host,
-                b.trace, random.nextLong(timing.comTimeoutMillis()));
+        this.protocol = new TeamProtocol(vehicle, slots, timing, comm, b.clock, b.scheduler, b.description, store,
+                b.repository, host, b.trace, random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
         new Discovery((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);

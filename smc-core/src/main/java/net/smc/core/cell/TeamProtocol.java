@@ -88,6 +88,7 @@ final class TeamProtocol implements Subscriber {
     private final Scheduler scheduler;
     private final CapabilityDescription description;
     private final PolicyStore store;
+    private final net.smc.policy.PolicyRepository repository;
     private final Host host;
     private final Consumer<CellEvent> trace;
     private final long tickPhaseMillis;
@@ -198,8 +199,8 @@ final class TeamProtocol implements Subscriber {
     }
 
     TeamProtocol(String self, Slots slots, Timing timing, CommunicationManager comm, Clock clock, Scheduler scheduler,
-                 CapabilityDescription description, PolicyStore store, Host host, Consumer<CellEvent> trace,
-                 long tickPhaseMillis) {
+                 CapabilityDescription description, PolicyStore store, net.smc.policy.PolicyRepository repository,
+                 Host host, Consumer<CellEvent> trace, long tickPhaseMillis) {
         this.self = self;
         this.slots = slots;
         this.missionId = slots.mission().instanceName();
@@ -209,6 +210,7 @@ final class TeamProtocol implements Subscriber {
         this.scheduler = scheduler;
         this.description = description;
         this.store = store;
+        this.repository = repository;
         this.host = host;
         this.trace = trace;
         this.tickPhaseMillis = tickPhaseMillis;
@@ -652,9 +654,17 @@ final class TeamProtocol implements Subscriber {
             return;
         }
         incoming = new Incoming(from, back.get(), env.id(), a, clock.nowMillis());
+        Set<String> listed = new LinkedHashSet<>();
         for (PolicyRef ref : a.policies()) {
+            listed.add(ref.uri());
             if (!store.has(ref)) {
                 comm.send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        // Whatever the role and the roles below it need that the assignment did not name.
+        for (String uri : subtreePolicyUris(a.role())) {
+            if (!listed.contains(uri) && store.get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                comm.send(back.get(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
             }
         }
         completeIfReady();
@@ -695,7 +705,8 @@ final class TeamProtocol implements Subscriber {
 
     private void completeIfReady() {
         Incoming in = incoming;
-        if (in == null || !in.assignment().policies().stream().allMatch(store::has)) {
+        if (in == null || !in.assignment().policies().stream().allMatch(store::has)
+                || !policiesHeld(in.assignment().role())) {
             return;
         }
         incoming = null;
@@ -778,6 +789,31 @@ final class TeamProtocol implements Subscriber {
         return slots.rank(role) < slots.rank(mine) && slots.role(role).requirement().isMetBy(description);
     }
 
+    /** The repository holder's fallback: a file of the local repository, if the cell has one. */
+    private Optional<PolicyStore.Entry> fromRepository(String uri) {
+        if (repository == null) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(store.load(repository, uri));
+        } catch (IllegalArgumentException missing) {
+            return Optional.empty();
+        }
+    }
+
+    /** The policy URIs of a role and of every role it manages, down the tree. */
+    private List<String> subtreePolicyUris(String role) {
+        Set<String> uris = new LinkedHashSet<>();
+        List<String> pending = new ArrayList<>(List.of(role));
+        while (!pending.isEmpty()) {
+            MissionRole r = slots.role(pending.remove(0));
+            uris.addAll(r.policies());
+            uris.addAll(r.authorisations());
+            pending.addAll(slots.managedRoles(r.name()));
+        }
+        return List.copyOf(uris);
+    }
+
     /** A parent followed by its own ancestors, cut to the most a message carries. */
     private static List<String> lineage(String parentVehicle, List<String> above) {
         List<String> chain = new ArrayList<>();
@@ -807,6 +843,10 @@ final class TeamProtocol implements Subscriber {
 
     private void onPolicyRequest(Envelope env, PolicyRequest r) {
         Optional<PolicyStore.Entry> entry = store.get(r.uri(), r.version());
+        if (entry.isEmpty() && (acting || backupRank >= 0)) {
+            entry = fromRepository(r.uri()).filter(e -> r.version() == PolicyStore.ANY_VERSION
+                    || e.version() == r.version());
+        }
         Optional<Address> back = address(env.sender());
         if (entry.isEmpty() || back.isEmpty()) {
             reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
@@ -1244,8 +1284,11 @@ final class TeamProtocol implements Subscriber {
     }
 
     private void hostLocally(Seat seat, Owned o) {
-        if (!canAlsoHold(seats, seat) || !slots.role(seat.role()).requirement().isMetBy(description)
-                || !policiesHeld(seat.role())) {
+        if (!canAlsoHold(seats, seat) || !slots.role(seat.role()).requirement().isMetBy(description)) {
+            return;
+        }
+        if (!policiesHeld(seat.role())) {
+            requestMissingPolicies(seat.role());
             return;
         }
         try {
@@ -1259,6 +1302,21 @@ final class TeamProtocol implements Subscriber {
         recomputeOwnership();
         emit(CellEvent.Kind.HOSTING, seat + " beside " + seats.get(0));
         updateMissionState();
+    }
+
+    /** Asks the parent (or, for a repository holder, the local repository) for a role's missing files. */
+    private void requestMissingPolicies(String role) {
+        for (String uri : subtreePolicyUris(role)) {
+            if (store.get(uri, PolicyStore.ANY_VERSION).isPresent()) {
+                continue;
+            }
+            if ((acting || backupRank >= 0) && fromRepository(uri).isPresent()) {
+                continue;
+            }
+            if (parent != null) {
+                send(parent.address(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
     }
 
     private boolean policiesHeld(String role) {
@@ -1341,6 +1399,11 @@ final class TeamProtocol implements Subscriber {
 
     /** The commander went silent: this backup leads the team in the next epoch. */
     private void takeOver() {
+        for (String uri : allPolicyUris()) {
+            if (store.get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                fromRepository(uri);
+            }
+        }
         if (!policiesHeld(Mission.COMMANDER)) {
             emit(CellEvent.Kind.REJECTED, "cannot take over: the commander's policies are not all here");
             backupRank = -1;
@@ -1492,16 +1555,8 @@ final class TeamProtocol implements Subscriber {
 
     /** The policies of a role and of every role below it, as this cell holds them. */
     private List<PolicyRef> policyRefs(String role) {
-        Set<String> uris = new LinkedHashSet<>();
-        List<String> pending = new ArrayList<>(List.of(role));
-        while (!pending.isEmpty()) {
-            MissionRole r = slots.role(pending.remove(0));
-            uris.addAll(r.policies());
-            uris.addAll(r.authorisations());
-            pending.addAll(slots.managedRoles(r.name()));
-        }
         List<PolicyRef> refs = new ArrayList<>();
-        for (String uri : uris) {
+        for (String uri : subtreePolicyUris(role)) {
             store.ref(uri).ifPresent(refs::add);
         }
         return refs;
