@@ -7,6 +7,7 @@ import java.util.Optional;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
+import net.smc.core.transport.ForwardingTransport;
 import net.smc.core.transport.Receiver;
 import net.smc.core.transport.Transport;
 
@@ -63,13 +64,12 @@ public final class IdealAuthentication {
     }
 
     /** One vehicle's endpoint: delivers only what vouched-for vehicles sent. */
-    public final class Endpoint implements AuthenticatingTransport {
-        private final Transport inner;
+    public final class Endpoint extends ForwardingTransport implements AuthenticatingTransport {
         private final CredentialStatus status;
         private AuthenticatedReceiver receiver;
 
         private Endpoint(Transport inner, CredentialStatus status) {
-            this.inner = inner;
+            super(inner);
             this.status = status;
             inner.setReceiver(this::onDatagram);
         }
@@ -77,21 +77,6 @@ public final class IdealAuthentication {
         /** What the check of this endpoint's own credential found. */
         public CredentialStatus credentialStatus() {
             return status;
-        }
-
-        @Override
-        public Address localAddress() {
-            return inner.localAddress();
-        }
-
-        @Override
-        public void send(Address to, byte[] data) {
-            inner.send(to, data);
-        }
-
-        @Override
-        public void broadcast(byte[] data) {
-            inner.broadcast(data);
         }
 
         @Override
@@ -111,11 +96,6 @@ public final class IdealAuthentication {
         @Override
         public Optional<Credential> credentialOf(String peer) {
             return Optional.ofNullable(byVehicle.get(peer));
-        }
-
-        @Override
-        public void close() {
-            inner.close();
         }
 
         private void onDatagram(Address from, byte[] data) {

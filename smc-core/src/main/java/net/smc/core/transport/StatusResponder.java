@@ -43,7 +43,7 @@ import org.slf4j.LoggerFactory;
  * <p>Threading: that of the wrapped transport. The receiver (and so the view supplier) runs on the
  * cell's thread; the counters are written there and may be read from any thread.
  */
-public final class StatusResponder implements Transport {
+public final class StatusResponder extends ForwardingTransport {
     private static final Logger LOG = LoggerFactory.getLogger(StatusResponder.class);
 
     /** The first 8 bytes of a status query: ASCII {@code SMC?STAT}. */
@@ -61,7 +61,6 @@ public final class StatusResponder implements Transport {
 
     private static final long WINDOW_MILLIS = 1_000;
 
-    private final Transport inner;
     private final Supplier<String> view;
     private final Clock clock;
     /** When each of the last replies went out, oldest at {@link #next}; {@code Long.MIN_VALUE} for none. */
@@ -92,7 +91,7 @@ public final class StatusResponder implements Transport {
      * @param repliesPerSecond  replies allowed in any 1,000 ms, at least 1
      */
     public StatusResponder(Transport inner, Supplier<String> view, Clock clock, int repliesPerSecond) {
-        this.inner = Objects.requireNonNull(inner, "inner");
+        super(inner);
         this.view = Objects.requireNonNull(view, "view");
         this.clock = Objects.requireNonNull(clock, "clock");
         if (repliesPerSecond < 1) {
@@ -121,32 +120,12 @@ public final class StatusResponder implements Transport {
     }
 
     @Override
-    public Address localAddress() {
-        return inner.localAddress();
-    }
-
-    @Override
-    public void send(Address to, byte[] data) {
-        inner.send(to, data);
-    }
-
-    @Override
-    public void broadcast(byte[] data) {
-        inner.broadcast(data);
-    }
-
-    @Override
     public void setReceiver(Receiver receiver) {
         Objects.requireNonNull(receiver, "receiver");
         if (this.receiver != null) {
             throw new IllegalStateException("transport " + localAddress() + " already has a receiver; it takes one");
         }
         this.receiver = receiver;
-    }
-
-    @Override
-    public void close() {
-        inner.close();
     }
 
     /** Queries answered with a reply (the view, or the too-large error). */
