@@ -1,6 +1,7 @@
 package net.smc.demo;
 
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
@@ -11,13 +12,14 @@ import picocli.CommandLine.Spec;
 /**
  * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}),
  * {@code shell} ({@link ShellCommand}), {@code validate} ({@link ValidateCommand}),
- * {@code keys} ({@link KeysCommand}) and {@code status} ({@link StatusCommand}). Only {@link #main} touches the process (its streams and its
- * exit status); {@link #commandLine(Io)} builds the same command on any streams.
+ * {@code keys} ({@link KeysCommand}), {@code node} ({@link NodeCommand}) and {@code status}
+ * ({@link StatusCommand}). Only {@link #main} touches the process (its streams, its exit status, and
+ * the shutdown hook that stops a node); {@link #commandLine(Io)} builds the same command on any streams.
  */
 @Command(name = "smc", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         synopsisSubcommandLabel = "COMMAND",
         description = "Runs PonderTalk policy scripts in a self-managed cell's policy engine, checks missions, "
-                + "and asks running nodes for their status.",
+                + "runs a vehicle's cell on the network, and asks running nodes for their status.",
         footer = {"%nRun 'smc COMMAND --help' for a command's options and exit statuses.",
             "Exit status 2 means a usage error; the commands explain their other statuses."})
 public final class Main implements Callable<Integer> {
@@ -31,10 +33,16 @@ public final class Main implements Callable<Integer> {
         System.exit(commandLine(Io.system()).execute(args));
     }
 
-    /** The {@code smc} command reading and writing {@code io}'s streams. */
+    /** The {@code smc} command reading and writing {@code io}'s streams; {@code smc node} stops when the JVM shuts down. */
     static CommandLine commandLine(Io io) {
+        return commandLine(io, StopSignal::onShutdown);
+    }
+
+    /** The {@code smc} command, whose {@code node} runs until a signal from {@code nodeStops} fires. */
+    static CommandLine commandLine(Io io, Supplier<StopSignal> nodeStops) {
         CommandLine commandLine = new CommandLine(new Main())
                 .addSubcommand(new KeysCommand(io))
+                .addSubcommand(new NodeCommand(io, nodeStops))
                 .addSubcommand(new RunCommand(io))
                 .addSubcommand(new ShellCommand(io))
                 .addSubcommand(new StatusCommand(io))
@@ -49,7 +57,7 @@ public final class Main implements Callable<Integer> {
     /** {@code smc} without a command. */
     @Override
     public Integer call() {
-        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate, keys or status");
+        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate, keys, node or status");
     }
 
     /** The version line of {@code smc --version} and the subcommands' {@code --version}. */

@@ -30,7 +30,7 @@ final class StatusCommand implements Callable<Integer> {
 
     private final Io io;
 
-    @Option(names = "--node", required = true, paramLabel = "ADDR:PORT", converter = NodeConverter.class,
+    @Option(names = "--node", required = true, paramLabel = "ADDR:PORT", converter = AddressConverter.class,
             description = "The node's unicast address: an IPv4 address and a UDP port, e.g. 10.77.0.11:4000.")
     Address node;
 
@@ -56,19 +56,6 @@ final class StatusCommand implements Callable<Integer> {
         io.stdout().println(json);
         io.stdout().flush();
         return 0;
-    }
-
-    /** {@code ADDR:PORT} as an {@link Address}; anything else is a usage error saying what was expected. */
-    static final class NodeConverter implements ITypeConverter<Address> {
-        @Override
-        public Address convert(String value) {
-            try {
-                return Address.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new TypeConversionException("'" + value + "' is not ADDR:PORT; expected an IPv4 address and a "
-                        + "UDP port 1-65535, e.g. 127.0.0.1:4000");
-            }
-        }
     }
 
     /** A whole number of milliseconds, 1 to {@value #MAX_TIMEOUT_MILLIS}. */

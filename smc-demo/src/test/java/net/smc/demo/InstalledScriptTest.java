@@ -3,16 +3,21 @@ package net.smc.demo;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.net.DatagramSocket;
+import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Runs the script {@code ./gradlew :smc-demo:installDist} installs (the smc-demo test task
- * depends on it). A missing script fails the test: it means the install did not run.
+ * depends on it): {@code smc run}'s output and exit status, and {@code smc node} ending cleanly on
+ * SIGTERM. A missing script fails the test: it means the install did not run.
  */
 class InstalledScriptTest {
     @TempDir
@@ -41,5 +46,44 @@ class InstalledScriptTest {
         assertTrue(process.waitFor(60, TimeUnit.SECONDS), "smc did not end within 60 s");
         assertEquals("7\nab\n", out);
         assertEquals(3, process.exitValue());
+    }
+
+    @Test
+    void installedSmcNode_onSigterm_closesCleanlyAndSaysSo() throws Exception {
+        Path script = script();
+        assertTrue(Files.isExecutable(script), "the installed smc script is missing at " + script);
+        Smc smc = Smc.in(dir);
+        assertEquals(0, smc.run("keys", "authority", "--out", "keys").status());
+        assertEquals(0, smc.run("keys", "vehicle", "--id", "cdr", "--out", "keys").status());
+        assertEquals(0, smc.run("keys", "issue", "--authority", "keys/authority.key", "--vehicle-pub", "keys/cdr.pub", "--id",
+                "cdr", "--mission", "HouseSurvey", "--valid-for", "1h", "--out", "keys/cdr.cred").status());
+        Path mission = Path.of(System.getProperty("smc.project.dir", "..")).resolve("missions/reconnaissance.instance.xml");
+        Path log = dir.resolve("node.log");
+
+        Process process = new ProcessBuilder(script.toString(), "node", "--mission", mission.toString(),
+                "--credential", "keys/cdr.cred", "--key", "keys/cdr.key", "--authority", "keys/authority.pub",
+                "--bind", "127.0.0.1:" + freePort(), "--broadcast", "127.255.255.255:" + freePort(), "--commander",
+                "--resources", "communication")
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        process.getOutputStream().close();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (!Files.readString(log).contains(" COMMANDING ")) {
+            assertTrue(process.isAlive() && System.nanoTime() < deadline, "the node did not come up: " + Files.readString(log));
+            Thread.sleep(20);
+        }
+        process.destroy();   // SIGTERM
+
+        assertTrue(process.waitFor(30, TimeUnit.SECONDS), "smc node did not end within 30 s of SIGTERM");
+        List<String> lines = Files.readAllLines(log);
+        assertTrue(lines.get(0).startsWith("up: vehicle cdr of mission HouseSurvey at 127.0.0.1:"), lines.toString());
+        assertEquals("down: vehicle cdr stopped: the process was asked to end (SIGTERM or SIGINT)",
+                lines.get(lines.size() - 1), lines.toString());
+        assertEquals(143, process.exitValue(), "the JVM's status for SIGTERM");
+    }
+
+    private static int freePort() throws IOException {
+        try (DatagramSocket probe = new DatagramSocket(new InetSocketAddress("0.0.0.0", 0))) {
+            return probe.getLocalPort();
+        }
     }
 }

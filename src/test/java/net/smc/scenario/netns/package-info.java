@@ -6,6 +6,11 @@
  * waits for what those processes write. Needs root and iproute2; tests check
  * {@code NetnsLab.unavailableReason()} with JUnit assumptions, so elsewhere they are skipped with the reason.
  *
+ * <p>{@link net.smc.scenario.netns.TeamOverNetnsTest} runs a team of {@code smc node} processes on a lab:
+ * {@link net.smc.scenario.netns.NodeTeam} issues their keys, starts them and reads their logs, and a
+ * {@link net.smc.scenario.netns.ViewProbe} on a host of its own collects their status views
+ * ({@link net.smc.scenario.netns.NodeView}), since the test's own JVM is outside the lab's network.
+ *
  * <pre>{@code
  * Optional<String> reason = NetnsLab.unavailableReason();
  * assumeTrue(reason.isEmpty(), () -> reason.get());

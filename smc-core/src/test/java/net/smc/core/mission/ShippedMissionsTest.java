@@ -86,7 +86,7 @@ class ShippedMissionsTest {
         assertEquals(List.of("comTimeout", "failureTimeout", "scheme", "backups"), List.copyOf(parameters.keySet()));
         assertEquals(500, parameters.get("comTimeout").asInt());
         assertEquals(3000, parameters.get("failureTimeout").asInt());
-        assertEquals("distributed", parameters.get("scheme").value());
+        assertEquals("distributed", parameters.get("scheme").asString());
         assertEquals(1, parameters.get("backups").asInt());
     }
 
