@@ -54,11 +54,6 @@ final class NodeTeam {
                     List.of("Explorer", "HazardDetector", "Relay"), false);
         }
 
-        /** A surveyor that can hold no other role. */
-        static Vehicle scout(String id) {
-            return new Vehicle(id, List.of("motion", "video"), List.of("Explorer"), false);
-        }
-
         static Vehicle aggregator(String id) {
             return new Vehicle(id, List.of("communication"), List.of("Aggregator"), false);
         }

@@ -29,12 +29,9 @@ import org.junit.jupiter.api.io.TempDir;
  * a {@link NetnsLab} cannot be made (not root, no iproute2); the lossy formation is skipped, with the
  * reason, where no loss tool can be had.
  *
- * <p>The lossy formation uses surveyors that can hold no other role. With surveyors that can also
- * detect and relay, loss makes the team stall now and then (in the simulation too, about one seed in
- * four at 20% loss): when the commander's assignment to the second surveyor-capable vehicle is lost
- * or late, the first surveyor, which discovers for the detector and relay seats it hosts, gives that
- * vehicle one of them, and nothing ever moves it up to the vacant surveyor seat: the mission waits in
- * FORMING for good.
+ * <p>The lossy formation uses the same vehicles as the first. Under loss the first surveyor may give
+ * the second surveyor-capable vehicle a detector's or relay's seat before the commander reaches it;
+ * the commander then moves it up to the vacant surveyor seat (see the team-protocols design note).
  *
  * <p>The measured times go to standard output, one {@code measured: ...} line each. On a failure,
  * the last lines of every node's log and the nodes' latest views are printed.
@@ -59,10 +56,8 @@ class TeamOverNetnsTest {
             Vehicle.aggregator("a1"), Vehicle.detector("d1"), Vehicle.detector("d2"), Vehicle.relay("r1"), Vehicle.relay("r2"));
     /** A surveyor-capable vehicle that joins the complete team, and so stays free: the spare. */
     private static final Vehicle SPARE = Vehicle.surveyor("s3");
-    /** The optimal team again, with surveyors that can hold no other role (see the class comment). */
-    private static final List<Vehicle> LOSSY_TEAM = List.of(Vehicle.commander("cdr"), Vehicle.scout("s1"),
-            Vehicle.scout("s2"), Vehicle.aggregator("a1"), Vehicle.detector("d1"), Vehicle.detector("d2"),
-            Vehicle.relay("r1"), Vehicle.relay("r2"));
+    /** The optimal team again, for the formation under loss. */
+    private static final List<Vehicle> LOSSY_TEAM = TEAM;
 
     @TempDir
     Path dir;
