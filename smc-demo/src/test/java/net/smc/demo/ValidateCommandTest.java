@@ -41,6 +41,8 @@ class ValidateCommandTest {
                 "parameters:",
                 "  comTimeout = 500 (int)",
                 "  failureTimeout = 3000 (int)",
+                "  scheme = distributed (string)",
+                "  backups = 1 (int)",
                 "roles (minimal..optimal):",
                 "  commander   1..1  needs resources [communication]",
                 "    policy policy:/roles/commander/assign",

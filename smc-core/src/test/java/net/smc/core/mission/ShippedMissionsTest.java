@@ -83,9 +83,11 @@ class ShippedMissionsTest {
     void reconnaissance_parametersAreTyped() throws Exception {
         Map<String, Parameter> parameters = load("reconnaissance.instance.xml").parameters();
 
-        assertEquals(List.of("comTimeout", "failureTimeout"), List.copyOf(parameters.keySet()));
+        assertEquals(List.of("comTimeout", "failureTimeout", "scheme", "backups"), List.copyOf(parameters.keySet()));
         assertEquals(500, parameters.get("comTimeout").asInt());
         assertEquals(3000, parameters.get("failureTimeout").asInt());
+        assertEquals("distributed", parameters.get("scheme").asString());
+        assertEquals(1, parameters.get("backups").asInt());
     }
 
     @Test
