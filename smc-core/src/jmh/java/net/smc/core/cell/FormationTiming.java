@@ -51,10 +51,9 @@ import net.smc.policy.PolicyRepository;
  * (1.40 s) / 0.28 s (0.51 s) on loopback; the commander's view goes from FORMING straight to OPTIMAL
  * when all 8 start together, so RUNNING and OPTIMAL coincide. A spare takes a crashed surveyor's seat
  * after 3.2 s (3.5 s) / 2.9 s (3.4 s), and the backup takes over 3.9 s (4.0 s) / 3.7 s (3.9 s) after
- * the commander's crash; loopback is within half a second of these. The centralised team of 4 needs
- * 5.1 s to run: a surveyor offered two secondary roles at once answers only the later offer, and the
- * other is offered again after failureTimeout. The simulation runs the 8-vehicle team at about
- * 2,100 to 2,900 simulated seconds per wall second, and 200 vehicles at about 220.
+ * the commander's crash; loopback is within half a second of these. The simulation runs the
+ * 8-vehicle team at about 2,100 to 2,900 simulated seconds per wall second and 200 vehicles at about
+ * 220 on an otherwise idle machine, a third of that or less while other builds share its two cores.
  */
 public final class FormationTiming {
     private static final String CDR = "cdr";
