@@ -11,6 +11,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.mission.Mission;
@@ -62,8 +63,9 @@ public final class CellHost implements AutoCloseable {
         }
         Cell[] made = new Cell[1];
         this.status = new StatusResponder(udp, () -> made[0] == null ? "{}" : made[0].view().toJson());
-        this.transport = s.identity == null ? status
-                : new SecureTransport(status, SecureEndpoint.builder(s.identity, s.trust, clock).build());
+        Transport under = Objects.requireNonNull(s.wrap.apply(status), "the transport wrapper returned null");
+        this.transport = s.identity == null ? under
+                : new SecureTransport(under, SecureEndpoint.builder(s.identity, s.trust, clock).build());
         Cell.Builder b = Cell.builder(s.vehicle, s.mission, s.description).transport(transport).clock(clock)
                 .scheduler(new RealTimeScheduler(timer, thread)).repository(s.repository).commander(s.commander)
                 .seed(s.seed).trace(s.trace).output(s.output);
@@ -164,6 +166,7 @@ public final class CellHost implements AutoCloseable {
         private long seed = System.nanoTime();
         private Consumer<CellEvent> trace = e -> { };
         private Consumer<String> output = line -> { };
+        private UnaryOperator<Transport> wrap = UnaryOperator.identity();
 
         private Settings(String vehicle, Mission mission, CapabilityDescription description, PolicyRepository repository) {
             this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
@@ -202,6 +205,17 @@ public final class CellHost implements AutoCloseable {
         /** Receives every decision, on the cell's thread. */
         public Settings trace(Consumer<CellEvent> trace) {
             this.trace = Objects.requireNonNull(trace, "trace");
+            return this;
+        }
+
+        /**
+         * Puts a decorator between the network and the cell, under authentication: it gets the UDP
+         * transport (with status queries already answered) and returns what the cell's security
+         * layer, or the cell, uses. For fault injection on loopback (loss, partitions); none by
+         * default. The decorator is called on the cell's thread and closed with the host.
+         */
+        public Settings wrap(UnaryOperator<Transport> wrap) {
+            this.wrap = Objects.requireNonNull(wrap, "wrap");
             return this;
         }
 

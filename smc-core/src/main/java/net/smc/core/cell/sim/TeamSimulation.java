@@ -14,6 +14,7 @@ import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
@@ -82,6 +83,7 @@ public final class TeamSimulation {
     private final TrustAnchor trust;
     private final Map<String, Node> nodes = new LinkedHashMap<>();
     private final Deque<String> trace = new ArrayDeque<>();
+    private final Consumer<CellEvent> listener;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
     private int nextPort = 5000;
@@ -108,6 +110,7 @@ public final class TeamSimulation {
         this.scheme = b.scheme;
         this.network = new InMemoryNetwork(sim, seed);
         this.network.setDefaultLink(b.link);
+        this.listener = b.listener;
         this.trust = new TrustAnchor(AUTHORITY.verificationKey(), mission.instanceName());
         this.ideal = new IdealAuthentication(trust, sim);
         this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
@@ -316,8 +319,9 @@ public final class TeamSimulation {
         return List.copyOf(trace);
     }
 
-    /** Records a line in the trace (the harness's own fault actions use it too). */
+    /** Records a line in the trace (the harness's own fault actions use it too) and passes the event on. */
     public void record(CellEvent e) {
+        listener.accept(e);
         if (trace.size() == TRACE_LINES) {
             trace.removeFirst();
         }
@@ -373,6 +377,7 @@ public final class TeamSimulation {
         private Scheme scheme;
         private LinkProfile link = LinkProfile.DEFAULT.withLatency(5, 10);
         private long mergeBoundMillis = -1;
+        private Consumer<CellEvent> listener = e -> { };
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -405,6 +410,16 @@ public final class TeamSimulation {
         /** How long two acting commanders may hear each other before one must have stepped down. */
         public Builder mergeBound(long millis) {
             this.mergeBoundMillis = millis;
+            return this;
+        }
+
+        /**
+         * Receives every event of every cell, and the harness's own fault actions, as they happen
+         * (the trace keeps only the last lines, as text): for measurements such as the time to a
+         * mission state.
+         */
+        public Builder listener(Consumer<CellEvent> listener) {
+            this.listener = Objects.requireNonNull(listener, "listener");
             return this;
         }
 
