@@ -133,6 +133,8 @@ final class TeamProtocol implements Subscriber {
      */
     private final Map<String, Long> abandoned = new HashMap<>();
     private MissionState missionState;
+    /** Whether the last tick found an open seat (a DISCOVERING event marks each start). */
+    private boolean discovering;
 
     // As a backup commander.
     private Roster roster;
@@ -697,6 +699,9 @@ final class TeamProtocol implements Subscriber {
         if (incoming != null && !incoming.from().equals(from)) {
             return "this vehicle is taking a role from '" + incoming.from() + "'";
         }
+        if (incoming != null && !incoming.assignment().role().equals(a.role())) {
+            return "this vehicle is still taking role '" + incoming.assignment().role() + "'; one role at a time";
+        }
         if (!slots.role(a.role()).requirement().isMetBy(description)) {
             return "this vehicle lacks " + slots.role(a.role()).requirement().missingFrom(description).describe();
         }
@@ -1092,6 +1097,11 @@ final class TeamProtocol implements Subscriber {
         fillSecondarySeats();
         swapTowardsOptimal(now);
         boolean open = hasVacancy();
+        if (open && !discovering) {
+            emit(CellEvent.Kind.DISCOVERING, "discovers for "
+                    + owned.keySet().stream().filter(this::open).map(Seat::toString).toList());
+        }
+        discovering = open;
         if (open || (acting && ticks % Timing.BEACON_TICKS == 0)) {
             discover();
         }

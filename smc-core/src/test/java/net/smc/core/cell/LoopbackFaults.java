@@ -8,6 +8,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.UnaryOperator;
 
 import net.smc.core.transport.Address;
+import net.smc.core.transport.ForwardingTransport;
 import net.smc.core.transport.Receiver;
 import net.smc.core.transport.Transport;
 
@@ -69,18 +70,12 @@ final class LoopbackFaults {
     }
 
     /** One cell's transport with the team's faults applied. Used on that cell's thread only. */
-    private final class Link implements Transport {
-        private final Transport inner;
+    private final class Link extends ForwardingTransport {
         private final SplittableRandom random;
 
         Link(Transport inner, SplittableRandom random) {
-            this.inner = inner;
+            super(inner);
             this.random = random;
-        }
-
-        @Override
-        public Address localAddress() {
-            return inner.localAddress();
         }
 
         @Override
@@ -91,11 +86,6 @@ final class LoopbackFaults {
         }
 
         @Override
-        public void broadcast(byte[] data) {
-            inner.broadcast(data);
-        }
-
-        @Override
         public void setReceiver(Receiver receiver) {
             inner.setReceiver((from, data) -> {
                 double p = loss;
@@ -103,11 +93,6 @@ final class LoopbackFaults {
                     receiver.onDatagram(from, data);
                 }
             });
-        }
-
-        @Override
-        public void close() {
-            inner.close();
         }
     }
 }

@@ -87,6 +87,11 @@ class TeamOverUdpTest {
             tests.add(run("partitioned parts merge into one team when the partition heals", seed,
                     Missions.reconnaissance(), false, TeamOverUdpTest::partsMergeWhenThePartitionHeals));
         }
+        tests.add(run("with 10% of datagrams lost from the start, the team still forms", 4, Missions.reconnaissance(),
+                false, team -> {
+                    team.loss(0.1);
+                    formsTheTreeOfFigureFive(team);
+                }));
         tests.add(run("with 10% of datagrams lost, a crashed surveyor is still replaced by the spare", 3,
                 Missions.reconnaissance(), false, team -> crashedSurveyorIsReplacedBySpare(team, 3, 0.1)));
         return tests.stream();
