@@ -170,15 +170,20 @@ public final class Slots {
 
     /**
      * The seats a vehicle holds after it is given {@code added}: the new seat, then those of
-     * {@code held} that may still share the vehicle with it (the mission's colocation rules), in
-     * their order. Parent and child both apply this, so they agree without another message.
+     * {@code held} that may still share the vehicle with it (the mission's colocation rules), taken
+     * primary roles first and then by priority, whatever order {@code held} lists them in. Parent and
+     * child both apply this, so they agree without another message.
      */
     public List<Seat> afterAssign(List<Seat> held, Seat added) {
         List<Seat> out = new ArrayList<>();
         List<String> names = new ArrayList<>();
         out.add(added);
         names.add(added.role());
-        for (Seat s : held) {
+        // Primary roles first, then by priority: the answer must not depend on the order the two
+        // sides happen to list the seats in.
+        List<Seat> ordered = new ArrayList<>(held);
+        ordered.sort(java.util.Comparator.comparing((Seat s) -> role(s.role()).isSecondary()).thenComparing(this::compare));
+        for (Seat s : ordered) {
             if (s.equals(added) || names.contains(s.role())) {
                 continue;
             }
