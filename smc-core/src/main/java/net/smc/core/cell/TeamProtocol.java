@@ -988,7 +988,7 @@ final class TeamProtocol implements Subscriber {
             epoch = s.epoch();
             lastStatusMillis = clock.nowMillis();
             // Seats granted by the old commander count again only once the new one has echoed a heartbeat.
-            leaseUntilMillis = clock.nowMillis();
+            leaseUntilMillis = clock.nowMillis() - 1;
             backupRank = -1;
             roster = null;
             reportCountdown = 0;
