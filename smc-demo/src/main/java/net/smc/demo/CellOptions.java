@@ -54,11 +54,7 @@ final class CellOptions {
         List<Path> resolved = new ArrayList<>();
         for (Path given : files) {
             Path file = workingDir.resolve(given);
-            String problem = !Files.exists(file) ? "no such file"
-                    : Files.isDirectory(file) ? "is a directory"
-                    : !Files.isRegularFile(file) ? "not a regular file"
-                    : !Files.isReadable(file) ? "permission denied"
-                    : null;
+            String problem = readProblem(file);
             if (problem != null) {
                 throw new ParameterException(spec.commandLine(), "cannot read '" + given + "': " + problem);
             }
@@ -98,5 +94,14 @@ final class CellOptions {
                 default -> throw new TypeConversionException("'" + value + "' is neither 'allow' nor 'deny'");
             };
         }
+    }
+
+    /** Why {@code file} cannot be read as a regular file, or null when it can. */
+    static String readProblem(Path file) {
+        return !Files.exists(file) ? "no such file"
+                : Files.isDirectory(file) ? "is a directory"
+                : !Files.isRegularFile(file) ? "not a regular file"
+                : !Files.isReadable(file) ? "permission denied"
+                : null;
     }
 }

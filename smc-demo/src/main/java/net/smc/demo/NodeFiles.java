@@ -136,11 +136,7 @@ final class NodeFiles {
     /** The file resolved against the working directory, if it is a readable regular file. */
     private Path readable(String option, Path given) throws Refused {
         Path file = workingDir.resolve(given);
-        String problem = !Files.exists(file) ? "no such file"
-                : Files.isDirectory(file) ? "is a directory"
-                : !Files.isRegularFile(file) ? "not a regular file"
-                : !Files.isReadable(file) ? "permission denied"
-                : null;
+        String problem = CellOptions.readProblem(file);
         if (problem != null) {
             throw new Refused(option + " " + given + ": cannot read it: " + problem);
         }

@@ -6,8 +6,6 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
-import java.security.NoSuchAlgorithmException;
-import java.security.SecureRandom;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -23,6 +21,7 @@ import java.util.function.Predicate;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.cell.sim.SimVehicle;
+import net.smc.core.cell.sim.TeamSimulation;
 import net.smc.core.mission.Mission;
 import net.smc.core.security.Claims;
 import net.smc.core.security.Credential;
@@ -46,7 +45,7 @@ import net.smc.core.transport.udp.UdpSettings;
 final class UdpTeam implements AutoCloseable {
     static final long POLL_MILLIS = 100;
     private static final int TRACE_LINES = 300;
-    private static final SigningKey AUTHORITY = SigningKey.generate(seeded(1));
+    private static final SigningKey AUTHORITY = SigningKey.generate(TeamSimulation.seeded(1));
     private static final Map<String, Identity> IDENTITIES = new ConcurrentHashMap<>();
 
     private final Mission mission;
@@ -262,20 +261,10 @@ final class UdpTeam implements AutoCloseable {
     /** A key and a credential from the test authority per vehicle, made once: Ed25519 keys change no outcome. */
     private Identity identity(String vehicle) {
         return IDENTITIES.computeIfAbsent(vehicle + "@" + mission.instanceName(), k -> {
-            SigningKey key = SigningKey.generate(seeded(k.hashCode() * 7919L + 3));
+            SigningKey key = SigningKey.generate(TeamSimulation.seeded(k.hashCode() * 7919L + 3));
             return new Identity(key, Credential.issue(new Claims(vehicle, key.verificationKey(), mission.instanceName(), 0,
                     Long.MAX_VALUE / 2), AUTHORITY));
         });
-    }
-
-    private static SecureRandom seeded(long seed) {
-        try {
-            SecureRandom random = SecureRandom.getInstance("SHA1PRNG");
-            random.setSeed(seed);
-            return random;
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("SHA1PRNG is missing from this JDK", e);
-        }
     }
 
     private static int freePort() {

@@ -357,7 +357,8 @@ public final class TeamSimulation {
         return SigningKey.generate(seeded(seed));
     }
 
-    private static SecureRandom seeded(long seed) {
+    /** A SecureRandom that gives the same bytes for the same seed: for keys of simulated and test vehicles only. */
+    public static SecureRandom seeded(long seed) {
         try {
             SecureRandom random = SecureRandom.getInstance("SHA1PRNG");
             random.setSeed(seed);
