@@ -160,7 +160,6 @@ final class TeamProtocol implements Subscriber {
     private static final class PendingCapability {
         final Set<String> roles = new LinkedHashSet<>();
         final long sinceMillis;
-        boolean reassignment;
 
         PendingCapability(long sinceMillis) {
             this.sinceMillis = sinceMillis;
@@ -429,7 +428,7 @@ final class TeamProtocol implements Subscriber {
         }
         Child known = children.get(env.sender());
         if (known != null && !known.seats.isEmpty()) {
-            known.description = full;
+            known.description = full; // a child (from a roster, say): now this cell knows what it can do
             return;
         }
         // Algorithm 2, line 3: the description must match the requirement of one of the roles.
@@ -438,11 +437,6 @@ final class TeamProtocol implements Subscriber {
                 .filter(s -> slots.role(s.role()).requirement().isMetBy(full))
                 .min(this::preferVacant);
         if (seat.isEmpty()) {
-            return;
-        }
-        Child existing = children.get(env.sender());
-        if (existing != null && !existing.seats.isEmpty()) {
-            existing.description = full; // a child this cell learnt from a roster: now it knows what it can do
             return;
         }
         if (owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
@@ -1154,10 +1148,6 @@ final class TeamProtocol implements Subscriber {
         if (free.isPresent()) {
             emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + ") to free vehicle " + free.get());
             requestFullCapability(free.get(), role);
-            PendingCapability p = capabilityRequests.get(free.get());
-            if (p != null) {
-                p.reassignment = true;
-            }
             return;
         }
         Optional<Child> movable = children.values().stream()
