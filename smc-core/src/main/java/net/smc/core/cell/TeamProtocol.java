@@ -83,6 +83,8 @@ final class TeamProtocol implements Subscriber {
     private final String missionId;
     private final Slots slots;
     private final Timing timing;
+    /** {@link Timing#pendingMillis()}, derived once: it is read for every reservation every tick. */
+    private final long pendingMillis;
     private final CommunicationManager comm;
     private final Clock clock;
     private final Scheduler scheduler;
@@ -117,7 +119,6 @@ final class TeamProtocol implements Subscriber {
     private List<String> ancestors = List.of();
     private List<Object> handedOver = List.of();
     private List<Object> reportedState = List.of();
-    private boolean stateChanged;
     private int teamSize;
 
     // As a manager.
@@ -145,7 +146,7 @@ final class TeamProtocol implements Subscriber {
     private Cancellable tickTimer;
     private long ticks;
     private boolean stopped;
-    private String lastReport = "";
+    private List<Object> lastReport = List.of();
     private final Map<String, Long> rejected = new TreeMap<>();
 
     private record Parent(String vehicle, Address address) {
@@ -206,6 +207,7 @@ final class TeamProtocol implements Subscriber {
         this.slots = slots;
         this.missionId = slots.mission().instanceName();
         this.timing = timing;
+        this.pendingMillis = timing.pendingMillis();
         this.comm = comm;
         this.clock = clock;
         this.scheduler = scheduler;
@@ -551,7 +553,7 @@ final class TeamProtocol implements Subscriber {
         // until it expires, an answer comes, or the vehicle's heartbeat shows it took the seat.
         comm.send(to.get(), assignment, failureOnly(() -> emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
                 + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
-                + timing.pendingMillis() + " ms")));
+                + pendingMillis + " ms")));
     }
 
     private void onAssignmentResponse(Envelope env, AssignmentResponse r) {
@@ -907,12 +909,11 @@ final class TeamProtocol implements Subscriber {
         // The heartbeat's state field carries the slot of the primary seat, so the parent knows the exact seat.
         long id = comm.send(parent.address(), new Heartbeat(seats.get(0).role(), epoch, seats.get(0).slot()));
         heartbeatSentAt.put(id, now);
-        String report = report();
-        if (stateChanged || !report.equals(lastReport) || --reportCountdown <= 0) {
+        List<Object> report = reportValues();
+        if (!report.equals(lastReport) || --reportCountdown <= 0) {
             reportCountdown = REPORT_TICKS;
             lastReport = report;
-            stateChanged = false;
-            send(parent.address(), new RoleEvent(seats.get(0).role(), "report", reportValues()));
+            send(parent.address(), new RoleEvent(seats.get(0).role(), "report", report));
         }
     }
 
@@ -1107,13 +1108,9 @@ final class TeamProtocol implements Subscriber {
 
     /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */
     private void failed(Child child, long silentMillis) {
-        children.remove(child.vehicle);
         List<Seat> lost = child.seats;
+        vacate(child);
         for (Seat s : lost) {
-            Owned o = owned.get(s);
-            if (o != null && child.vehicle.equals(o.holder)) {
-                o.holder = null;
-            }
             handover.put(s.role(), child.state);
         }
         emit(CellEvent.Kind.FAILURE, child.vehicle + " silent for " + silentMillis + " ms; held " + lost
@@ -1334,12 +1331,7 @@ final class TeamProtocol implements Subscriber {
         }
         Child child = children.remove(from);
         if (child != null) {
-            for (Seat s : child.seats) {
-                Owned o = owned.get(s);
-                if (o != null && from.equals(o.holder)) {
-                    o.holder = null;
-                }
-            }
+            vacate(child);
             emit(CellEvent.Kind.LEFT, "child " + from + " left (" + l.reason() + "); vacated " + child.seats);
             updateMissionState();
         }
@@ -1592,14 +1584,7 @@ final class TeamProtocol implements Subscriber {
     }
 
     private int teamSize() {
-        if (!acting) {
-            return teamSize;
-        }
-        int n = 1;
-        for (Child c : children.values()) {
-            n += c.size;
-        }
-        return n;
+        return acting ? subtreeSize() : teamSize;
     }
 
     private int subtreeSize() {
@@ -1608,10 +1593,6 @@ final class TeamProtocol implements Subscriber {
             n += c.size;
         }
         return n;
-    }
-
-    private String report() {
-        return subtreeCounts() + "/" + subtreeSize() + "/" + hostedCount() + "/" + seats;
     }
 
     private List<Object> reportValues() {
@@ -1668,7 +1649,6 @@ final class TeamProtocol implements Subscriber {
     /** Sets the state this vehicle reports to its parent (its position, say), handed over if it fails. */
     void reportState(List<Object> state) {
         reportedState = List.copyOf(state);
-        stateChanged = true;
     }
 
     List<Object> handedOver() {
@@ -1750,8 +1730,8 @@ final class TeamProtocol implements Subscriber {
         heard.values().removeIf(h -> now - h.atMillis() > 4 * timing.failureTimeoutMillis());
         for (Map.Entry<Seat, Owned> e : owned.entrySet()) {
             Owned o = e.getValue();
-            if (o.pendingFor != null && now - o.pendingSince > timing.pendingMillis()) {
-                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + timing.pendingMillis() + " ms");
+            if (o.pendingFor != null && now - o.pendingSince > pendingMillis) {
+                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + pendingMillis + " ms");
             }
         }
         if (incoming != null && now - incoming.sinceMillis() > timing.failureTimeoutMillis()) {

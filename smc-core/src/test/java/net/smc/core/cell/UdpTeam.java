@@ -23,11 +23,6 @@ import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.cell.sim.SimVehicle;
 import net.smc.core.cell.sim.TeamSimulation;
 import net.smc.core.mission.Mission;
-import net.smc.core.security.Claims;
-import net.smc.core.security.Credential;
-import net.smc.core.security.Identity;
-import net.smc.core.security.SigningKey;
-import net.smc.core.security.TrustAnchor;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;
 
@@ -45,8 +40,6 @@ import net.smc.core.transport.udp.UdpSettings;
 final class UdpTeam implements AutoCloseable {
     static final long POLL_MILLIS = 100;
     private static final int TRACE_LINES = 300;
-    private static final SigningKey AUTHORITY = SigningKey.generate(TeamSimulation.seeded(1));
-    private static final Map<String, Identity> IDENTITIES = new ConcurrentHashMap<>();
 
     private final Mission mission;
     private final long seed;
@@ -86,7 +79,7 @@ final class UdpTeam implements AutoCloseable {
                 .udp(udp).commander(v.commander()).seed(cellSeed).trace(this::record)
                 .wrap(faults.link(v.id(), cellSeed));
         if (secure) {
-            s.security(identity(v.id()), new TrustAnchor(AUTHORITY.verificationKey(), mission.instanceName()));
+            s.security(TeamSimulation.identity(v, mission.instanceName()), TeamSimulation.trust(mission.instanceName()));
         }
         try {
             hosts.put(v.id(), CellHost.open(s, loop));
@@ -256,15 +249,6 @@ final class UdpTeam implements AutoCloseable {
             hosts.clear();
         }
         running.forEach(CellHost::close);
-    }
-
-    /** A key and a credential from the test authority per vehicle, made once: Ed25519 keys change no outcome. */
-    private Identity identity(String vehicle) {
-        return IDENTITIES.computeIfAbsent(vehicle + "@" + mission.instanceName(), k -> {
-            SigningKey key = SigningKey.generate(TeamSimulation.seeded(k.hashCode() * 7919L + 3));
-            return new Identity(key, Credential.issue(new Claims(vehicle, key.verificationKey(), mission.instanceName(), 0,
-                    Long.MAX_VALUE / 2), AUTHORITY));
-        });
     }
 
     private static int freePort() {

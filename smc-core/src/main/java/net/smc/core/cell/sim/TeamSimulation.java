@@ -111,7 +111,7 @@ public final class TeamSimulation {
         this.network = new InMemoryNetwork(sim, seed);
         this.network.setDefaultLink(b.link);
         this.listener = b.listener;
-        this.trust = new TrustAnchor(AUTHORITY.verificationKey(), mission.instanceName());
+        this.trust = trust(mission.instanceName());
         this.ideal = new IdealAuthentication(trust, sim);
         this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
         for (SimVehicle v : b.vehicles) {
@@ -343,8 +343,12 @@ public final class TeamSimulation {
         return out;
     }
 
-    /** Keys and credentials are made once per vehicle id and JVM: Ed25519 is slow and they change no outcome. */
-    private static Identity identity(SimVehicle v, String missionName) {
+    /**
+     * The key and credential of a simulated or test vehicle for a mission, issued by the test
+     * authority (a foreign one for a rogue). Made once per vehicle id and JVM: Ed25519 is slow and
+     * they change no outcome.
+     */
+    public static Identity identity(SimVehicle v, String missionName) {
         return IDENTITIES.computeIfAbsent((v.rogue() ? "rogue:" : "") + v.id() + "@" + missionName, k -> {
             SigningKey key = key(k.hashCode() * 7919L + 3);
             SigningKey issuer = v.rogue() ? FOREIGN_AUTHORITY : AUTHORITY;
@@ -366,6 +370,11 @@ public final class TeamSimulation {
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA1PRNG is missing from this JDK", e);
         }
+    }
+
+    /** What the vehicles of {@link #identity} trust: the test authority, for that mission. */
+    public static TrustAnchor trust(String missionName) {
+        return new TrustAnchor(AUTHORITY.verificationKey(), missionName);
     }
 
     /** Collects a simulation's settings; vehicles are required. */
