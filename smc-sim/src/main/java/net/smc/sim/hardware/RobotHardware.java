@@ -26,6 +26,8 @@ public interface RobotHardware {
 
     Battery battery();
 
+    Radio radio();
+
     /**
      * Registers a controller called once per control period (the world's step), on the cell's
      * thread, with the mission time in seconds. Replaces any previous controller of the same
