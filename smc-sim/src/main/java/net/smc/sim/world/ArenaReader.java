@@ -141,8 +141,11 @@ public final class ArenaReader {
             error(root, "no <start>; a world needs at least one start position");
         }
         Arena arena = new Arena(name, width, height, walls, doors, boxes, cylinders, hazards, targets, stations, starts);
-        for (int i = 0; i < starts.size(); i++) {
-            clearance(arena, starts.get(i), startElements.get(i));
+        if (errors.isEmpty()) {
+            // Only a sound arena gives meaningful distances: a wall with a bad coordinate would be read as 0.
+            for (int i = 0; i < starts.size(); i++) {
+                clearance(arena, starts.get(i), startElements.get(i));
+            }
         }
         return arena;
     }
