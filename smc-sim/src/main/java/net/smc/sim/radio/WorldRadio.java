@@ -10,7 +10,6 @@ import java.util.random.RandomGeneratorFactory;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.RadioModel;
-import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.Radio;
 import net.smc.sim.robot.SimRobot;
 import net.smc.sim.world.Arena;
@@ -161,8 +160,7 @@ public final class WorldRadio implements RadioModel {
     private double[] position(String id) {
         SimRobot robot = world.robot(id);
         if (robot != null) {
-            Pose p = robot.pose();
-            return new double[] {p.x(), p.y()};
+            return new double[] {robot.x(), robot.y()};
         }
         for (Arena.Station station : world.arena().stations()) {
             if (station.id().equals(id)) {

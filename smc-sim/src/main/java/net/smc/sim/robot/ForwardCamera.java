@@ -57,8 +57,7 @@ final class ForwardCamera implements Camera {
         }
         for (SimRobot other : world.robots()) {
             if (other != robot) {
-                Pose o = other.pose();
-                consider(seen, candidate, cx, cy, p.heading(), other.id(), "robot", o.x(), o.y());
+                consider(seen, candidate, cx, cy, p.heading(), other.id(), "robot", other.x(), other.y());
             }
             candidate++;
         }

@@ -136,6 +136,16 @@ public final class SimRobot implements RobotHardware {
                 body.getTransform().getRotationAngle());
     }
 
+    /** The body centre's x, m (cheaper than {@link #pose()}, which works out the heading). */
+    public double x() {
+        return body.getTransform().getTranslationX();
+    }
+
+    /** The body centre's y, m. */
+    public double y() {
+        return body.getTransform().getTranslationY();
+    }
+
     public KoalaSpec spec() {
         return spec;
     }
