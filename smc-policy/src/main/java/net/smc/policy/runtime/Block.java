@@ -6,7 +6,7 @@ import net.smc.policy.lang.SourcePos;
 
 /**
  * A block: code with the values, frozen when it was created, of the variables its code reads
- * (PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
+ * (smc-policy/PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
  * its handler.
  */
 @Managed("Block")

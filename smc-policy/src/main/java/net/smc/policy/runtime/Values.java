@@ -6,7 +6,7 @@ import java.util.IdentityHashMap;
 import java.util.Map;
 import java.util.Set;
 
-/** Printing, equality and class names of PonderTalk values: one place for the rules of PONDERTALK.md section 5. */
+/** Printing, equality and class names of PonderTalk values: one place for the rules of smc-policy/PONDERTALK.md section 5. */
 public final class Values {
     private Values() {
     }
