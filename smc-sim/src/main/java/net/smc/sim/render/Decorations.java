@@ -24,9 +24,9 @@ final class Decorations {
         double baseline = Math.min(v.header() - 3, text.size() + 3);
         text.boldLabel(g, scene.title(), 6, baseline, Palette.TEXT);
         String time = String.format(Locale.ROOT, "t = %.1f s", timeSeconds);
-        text.boldLabel(g, time, v.width() - 6 - text.width(g, time) * 1.1, baseline, Palette.TEXT);
+        text.boldLabel(g, time, v.width() - 8 - text.boldWidth(g, time), baseline, Palette.TEXT);
         if (!scene.caption().isEmpty()) {
-            double x = 6 + text.width(g, scene.title()) * 1.1 + 2 * text.size();
+            double x = 6 + text.boldWidth(g, scene.title()) + text.size();
             text.label(g, scene.caption(), x, baseline, new Color(0x555555));
         }
     }

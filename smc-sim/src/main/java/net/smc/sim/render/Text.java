@@ -37,6 +37,11 @@ final class Text {
         return s.isEmpty() ? 0 : new TextLayout(s, font, g.getFontRenderContext()).getAdvance();
     }
 
+    /** The width of {@code s} in bold, px. */
+    double boldWidth(Graphics2D g, String s) {
+        return s.isEmpty() ? 0 : new TextLayout(s, bold, g.getFontRenderContext()).getAdvance();
+    }
+
     private static void draw(Graphics2D g, String s, double x, double y, Color colour, Font f) {
         if (s == null || s.isEmpty()) {
             return;

@@ -1,0 +1,47 @@
+package net.smc.sim.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import javax.imageio.ImageIO;
+
+import net.smc.sim.world.Worlds;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/** Drives the Fig. 7 run and writes its picture, film and timeline to smc-sim/build/render/. */
+class RescuePictureTest {
+    private static RescueRun run;
+    private static Path out;
+
+    @BeforeAll
+    static void drive() throws IOException {
+        run = new RescueRun(GifRecorder.Settings.defaults());
+        run.run(120_000);
+        out = Worlds.projectDir().resolve("smc-sim/build/render");
+        Files.createDirectories(out);
+        ImageIO.write(new WorldPainter().render(run.world, run.scene, 1200, 860), "png", out.resolve("rescue.png").toFile());
+        run.gif.write(out.resolve("rescue.gif"));
+        run.timeline.writeCsv(out.resolve("rescue-timeline.csv"));
+    }
+
+    @Test
+    void firstSurveyor_isStoppedByTheHazard_andTheSecondReachesTheSoldier() {
+        assertTrue(run.r1.disabled(), "r1 should be disabled");
+        assertEquals("hazard:h1", run.r1.disabledBy());
+        assertTrue(run.reached, "r2 should reach the soldier; it is at " + run.r2.pose());
+        assertTrue(run.r2.pose().distanceTo(RescueRun.SOLDIER_X, RescueRun.SOLDIER_Y) < 0.8);
+    }
+
+    @Test
+    void png_isWrittenAtTheAskedSize() throws IOException {
+        BufferedImage png = ImageIO.read(out.resolve("rescue.png").toFile());
+        assertEquals(1200, png.getWidth());
+        assertEquals(860, png.getHeight());
+    }
+}
