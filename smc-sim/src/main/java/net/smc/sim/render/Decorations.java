@@ -22,13 +22,23 @@ final class Decorations {
 
     static void header(Graphics2D g, Scene scene, double timeSeconds, Viewport v, Text text) {
         double baseline = Math.min(v.header() - 3, text.size() + 3);
-        text.boldLabel(g, scene.title(), 6, baseline, Palette.TEXT);
         String time = String.format(Locale.ROOT, "t = %.1f s", timeSeconds);
-        text.boldLabel(g, time, v.width() - 8 - text.boldWidth(g, time), baseline, Palette.TEXT);
-        if (!scene.caption().isEmpty()) {
-            double x = 6 + text.boldWidth(g, scene.title()) + text.size();
-            text.label(g, scene.caption(), x, baseline, new Color(0x555555));
+        double timeX = v.width() - 8 - text.boldWidth(g, time);
+        text.boldLabel(g, time, timeX, baseline, Palette.TEXT);
+        String title = fit(g, text, scene.title(), timeX - 6 - text.size(), true);
+        text.boldLabel(g, title, 6, baseline, Palette.TEXT);
+        double x = 6 + text.boldWidth(g, title) + text.size();
+        String caption = fit(g, text, scene.caption(), timeX - x - text.size(), false);
+        text.label(g, caption, x, baseline, new Color(0x555555));
+    }
+
+    /** {@code s}, cut short with an ellipsis to fit {@code room} pixels ("" when not even that fits). */
+    private static String fit(Graphics2D g, Text text, String s, double room, boolean bold) {
+        String cut = s;
+        while (!cut.isEmpty() && (bold ? text.boldWidth(g, cut) : text.width(g, cut)) > room) {
+            cut = cut.length() <= 2 ? "" : cut.substring(0, cut.length() - 2) + "\u2026";
         }
+        return cut;
     }
 
     /** A bar of a round number of metres, about a sixth of the arena wide, under the arena's bottom-left corner. */

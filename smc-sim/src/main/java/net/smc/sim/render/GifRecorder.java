@@ -1,6 +1,5 @@
 package net.smc.sim.render;
 
-import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -25,7 +24,7 @@ import net.smc.sim.world.WorldStepListener;
 /**
  * Films a run as an animated GIF: a frame of the {@link WorldPainter}'s picture of the world and
  * its {@link Scene} every {@link Settings#everySteps} steps, small ({@link Settings#width} pixels
- * wide) and in 256 colours. It never holds more than {@link Settings#maxFrames} frames: when full
+ * wide) and in 256 colours ({@link GifPalette}). It never holds more than {@link Settings#maxFrames} frames: when full
  * it drops every other frame and samples half as often from then on, so a long run becomes a clip
  * of the same length that plays faster. {@link #write} writes the frames with a fixed delay and
  * loops forever.
@@ -35,6 +34,7 @@ public final class GifRecorder implements WorldStepListener {
     private final Scene scene;
     private final Settings settings;
     private final List<BufferedImage> frames = new ArrayList<>();
+    private final GifPalette colours = new GifPalette();
     private int every;
 
     /**
@@ -90,14 +90,7 @@ public final class GifRecorder implements WorldStepListener {
         int width = settings.width();
         int height = height(world, width);
         BufferedImage rgb = painter.render(world, scene, width, height);
-        BufferedImage indexed = new BufferedImage(width, height, BufferedImage.TYPE_BYTE_INDEXED);
-        Graphics2D g = indexed.createGraphics();
-        try {
-            g.drawImage(rgb, 0, 0, null);
-        } finally {
-            g.dispose();
-        }
-        frames.add(indexed);
+        frames.add(colours.map(rgb));
     }
 
     /** The frame height for an arena's shape at {@code width} px: the arena's aspect plus the header. */
@@ -135,7 +128,7 @@ public final class GifRecorder implements WorldStepListener {
             for (int i = 0; i < frames.size(); i++) {
                 BufferedImage frame = frames.get(i);
                 IIOMetadata metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(frame), null);
-                timing(metadata, i == frames.size() - 1 ? settings.delayMillis() * 25 : settings.delayMillis(), i == 0);
+                timing(metadata, colours.colourTable(), i == frames.size() - 1 ? settings.delayMillis() * 25 : settings.delayMillis(), i == 0);
                 writer.writeToSequence(new IIOImage(frame, null, metadata), null);
             }
             writer.endWriteSequence();
@@ -145,7 +138,7 @@ public final class GifRecorder implements WorldStepListener {
     }
 
     /** Sets a frame's delay and, on the first frame, the NETSCAPE2.0 extension that loops the film forever. */
-    private static void timing(IIOMetadata metadata, int delayMillis, boolean first) throws IIOInvalidTreeException {
+    private static void timing(IIOMetadata metadata, IIOMetadataNode table, int delayMillis, boolean first) throws IIOInvalidTreeException {
         String format = metadata.getNativeMetadataFormatName();
         IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(format);
         IIOMetadataNode control = child(root, "GraphicControlExtension");
@@ -161,6 +154,8 @@ public final class GifRecorder implements WorldStepListener {
             app.setUserObject(new byte[] {1, 0, 0});   // sub-block 1, loop count 0: for ever
             child(root, "ApplicationExtensions").appendChild(app);
         }
+        IIOMetadataNode old = child(root, "LocalColorTable");
+        root.replaceChild(table, old);
         metadata.setFromTree(format, root);
     }
 

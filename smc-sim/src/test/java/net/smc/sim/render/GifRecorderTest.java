@@ -43,6 +43,10 @@ class GifRecorderTest {
             assertEquals(6, reader.getNumImages(true));
             assertEquals(200, reader.read(0).getWidth());
             assertEquals(GifRecorder.height(world, 200), reader.read(5).getHeight());
+            Viewport v = Viewport.fit(world.arena(), 200, GifRecorder.height(world, 200));
+            assertEquals(Pixels.hex(Palette.FLOOR), Pixels.hex(Pixels.at(reader.read(0), v, 4.5, 3.5)), "floor colour kept exactly");
+            assertEquals(Pixels.hex(Palette.robot(0)), Pixels.hex(Pixels.at(reader.read(5), v, world.robot("a").x(), world.robot("a").y())),
+                    "robot colour kept exactly");
         } finally {
             reader.dispose();
         }
