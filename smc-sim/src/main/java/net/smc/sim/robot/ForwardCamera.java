@@ -49,21 +49,21 @@ final class ForwardCamera implements Camera {
         List<Sighting> seen = new ArrayList<>();
         int candidate = 0;
         for (Arena.Target t : arena.targets()) {
-            consider(seen, candidate++, cx, cy, p.heading(), t.id(), t.kind(), t.x(), t.y());
+            consider(seen, candidate++, cx, cy, p.heading(), "", t.id(), t.kind(), t.x(), t.y());
         }
         for (Arena.Hazard h : arena.hazards()) {
-            consider(seen, candidate++, cx, cy, p.heading(), "hazard:" + h.id(), "hazard", h.x(), h.y());
+            consider(seen, candidate++, cx, cy, p.heading(), "hazard:", h.id(), "hazard", h.x(), h.y());
         }
         for (Arena.Door d : arena.doors()) {
             if (d.open()) {
-                consider(seen, candidate, cx, cy, p.heading(), "door:" + d.id(), "marker", (d.x1() + d.x2()) / 2,
+                consider(seen, candidate, cx, cy, p.heading(), "door:", d.id(), "marker", (d.x1() + d.x2()) / 2,
                         (d.y1() + d.y2()) / 2);
             }
             candidate++;
         }
         for (SimRobot other : world.robots()) {
             if (other != robot) {
-                consider(seen, candidate, cx, cy, p.heading(), other.id(), "robot", other.x(), other.y());
+                consider(seen, candidate, cx, cy, p.heading(), "", other.id(), "robot", other.x(), other.y());
             }
             candidate++;
         }
@@ -71,8 +71,9 @@ final class ForwardCamera implements Camera {
         return seen;
     }
 
-    private void consider(List<Sighting> seen, int candidate, double cx, double cy, double heading, String tag,
-                          String kind, double x, double y) {
+    /** Adds a sighting of the thing tagged {@code prefix + id} at (x, y) when the camera sees it. */
+    private void consider(List<Sighting> seen, int candidate, double cx, double cy, double heading, String prefix,
+                          String id, String kind, double x, double y) {
         KoalaSpec spec = robot.spec();
         double dx = x - cx;
         double dy = y - cy;
@@ -99,6 +100,7 @@ final class ForwardCamera implements Camera {
                 * robot.world().noise().gaussian(robot.stream(), step, channel);
         double noisyBearing = bearing + spec.cameraNoise() / 10
                 * robot.world().noise().gaussian(robot.stream(), step, channel + 1);
+        String tag = prefix.isEmpty() ? id : prefix + id;
         seen.add(new Sighting(tag, kind, noisyBearing, Math.max(0, noisyDistance)));
     }
 }

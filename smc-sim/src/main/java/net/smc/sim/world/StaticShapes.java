@@ -106,6 +106,18 @@ final class StaticShapes {
                 || Math.max(ay, by) < rectBoxes[b + 1] || Math.min(ay, by) > rectBoxes[b + 3]) {
             return false;   // the segment's bounding box misses the rectangle's, so the segment does too
         }
+        // The segment's line misses the rectangle when the centre is further from it than the
+        // rectangle reaches across it (lengths scaled by the segment's length; with a margin for rounding).
+        double nx = ay - by;
+        double ny = bx - ax;
+        double ox = rects[i] - ax;
+        double oy = rects[i + 1] - ay;
+        double reach = rects[i + 2] * Math.abs(nx * rects[i + 4] + ny * rects[i + 5])
+                + rects[i + 3] * Math.abs(ny * rects[i + 4] - nx * rects[i + 5]);
+        double margin = 1e-9 * (Math.abs(nx) + Math.abs(ny)) * (1 + Math.abs(ox) + Math.abs(oy) + reach);
+        if (Math.abs(nx * ox + ny * oy) > reach + margin) {
+            return false;
+        }
         double c = rects[i + 4];
         double s = rects[i + 5];
         double px = ax - rects[i];
