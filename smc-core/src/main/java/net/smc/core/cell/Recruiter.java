@@ -15,7 +15,6 @@ import net.smc.core.comm.FailureReason;
 import net.smc.core.message.AssignmentResponse;
 import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
-import net.smc.core.message.Discovery;
 import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Invocation;

@@ -17,7 +17,6 @@ final class Seating {
     private final TeamContext ctx;
     private final TeamState st;
 
-
     Seating(TeamContext ctx, TeamState st) {
         this.ctx = ctx;
         this.st = st;

@@ -15,7 +15,6 @@ final class TeamCounts {
     private final TeamContext ctx;
     private final TeamState st;
 
-
     TeamCounts(TeamContext ctx, TeamState st) {
         this.ctx = ctx;
         this.st = st;

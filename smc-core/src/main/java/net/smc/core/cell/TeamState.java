@@ -10,9 +10,7 @@ import java.util.TreeMap;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
-import net.smc.core.message.Envelope;
 import net.smc.core.message.Identity;
-import net.smc.core.message.Leave;
 import net.smc.core.message.RoleAssignment;
 import net.smc.core.message.Roster;
 import net.smc.core.transport.Address;
