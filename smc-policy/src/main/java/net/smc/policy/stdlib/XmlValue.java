@@ -57,7 +57,8 @@ final class XmlValue extends ManagedObject {
             doc.setXmlStandalone(true);
             return new XmlValue(doc);
         } catch (SAXException e) {
-            throw new PonderError("not XML: " + e.getMessage());
+            throw new PonderError(e.getMessage() != null && e.getMessage().contains("DOCTYPE")
+                    ? "not XML: a DOCTYPE is not allowed" : "not XML: " + e.getMessage());
         } catch (Exception e) {
             throw new PonderError("cannot parse XML: " + e.getMessage());
         }
