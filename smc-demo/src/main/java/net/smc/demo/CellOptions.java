@@ -31,6 +31,9 @@ final class CellOptions {
                     + "(default: the " + DEFAULT_REPOSITORY + "/ folder of the current directory, if there is one).")
     Path repository;
 
+    /** The user's arguments ({@code root argsAsArray}): for {@code smc run}, those after {@code --}. */
+    List<String> userArguments = List.of();
+
     /** The policy repository to use, or {@code null} when there is none. */
     PolicyRepository repository(CommandSpec spec, Path workingDir) {
         if (repository == null) {
@@ -78,7 +81,7 @@ final class CellOptions {
         List<Path> units = readableFiles(spec, io.workingDir(), files);
         PolicyRepository repo = repository(spec, io.workingDir());
         return LargeStack.call(() -> {
-            CommandCell cell = new CommandCell(io, auth, repo);
+            CommandCell cell = new CommandCell(io, auth, repo, userArguments);
             cell.boot(units);
             cell.cell().endBoot();
             return work.run(cell);

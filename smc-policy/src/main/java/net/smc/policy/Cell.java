@@ -44,10 +44,12 @@ import net.smc.policy.runtime.Values;
  */
 public final class Cell {
     private final CellRuntime runtime;
+    private final TimerQueue timers;
     private Integer exitStatus;
 
-    private Cell(CellRuntime runtime) {
+    private Cell(CellRuntime runtime, TimerQueue timers) {
         this.runtime = runtime;
+        this.timers = timers;
     }
 
     public static Builder builder() {
@@ -63,7 +65,24 @@ public final class Cell {
         private RandomGenerator random = new Random(0);
         private Limits limits = Limits.DEFAULT;
         private PolicyRepository repository;
+        private TimerScheduler scheduler;
+        private List<String> arguments = List.of();
         private final Map<String, Class<?>> classes = new LinkedHashMap<>();
+
+        /**
+         * Where timers ({@code root load: "Timer"}) wait (default: a {@link TimerQueue} on the
+         * cell's clock that the owner drives through {@link Cell#timers()}).
+         */
+        public Builder scheduler(TimerScheduler timerScheduler) {
+            this.scheduler = Objects.requireNonNull(timerScheduler, "scheduler");
+            return this;
+        }
+
+        /** The user's arguments, answered by {@code root argsAsArray} and {@code root argsAsHash} (default: none). */
+        public Builder arguments(List<String> userArguments) {
+            this.arguments = List.copyOf(userArguments);
+            return this;
+        }
 
         /** Where {@code root print:} lines go (default: nowhere). */
         public Builder output(Consumer<String> lineSink) {
@@ -113,8 +132,9 @@ public final class Cell {
         }
 
         public Cell build() {
+            TimerQueue queue = scheduler == null ? new TimerQueue(clock) : null;
             return new Cell(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
-                    repository, Map.copyOf(classes))));
+                    repository, Map.copyOf(classes), scheduler == null ? queue : scheduler, arguments)), queue);
         }
     }
 
@@ -149,8 +169,30 @@ public final class Cell {
         return run("load", "root read: \"" + uri.replace("\"", "\\\"") + "\"");
     }
 
+    /**
+     * The cell's own timer queue, when it was built without a {@link Builder#scheduler}: run
+     * {@link TimerQueue#runDue()} on the cell's thread when its clock reaches
+     * {@link TimerQueue#nextDue()}.
+     *
+     * @throws IllegalStateException when the cell was given a scheduler of its own
+     */
+    public TimerQueue timers() {
+        if (timers == null) {
+            throw new IllegalStateException("this cell was given a scheduler; drive that one");
+        }
+        return timers;
+    }
+
+    /** Whether the cell has exited, by a unit or by a timer's event. */
+    private boolean exited() {
+        if (exitStatus == null && runtime.exitStatus() != null) {
+            exitStatus = runtime.exitStatus();
+        }
+        return exitStatus != null;
+    }
+
     private RunResult run(String sourceName, String text, Path file, CellRuntime.Variables variables) {
-        if (exitStatus != null) {
+        if (exited()) {
             return new RunResult(RunResult.Status.EXITED, null, List.of());
         }
         List<Diagnostic> seen = new ArrayList<>();
@@ -181,7 +223,7 @@ public final class Cell {
      *                     ({@code Ponder2AuthorizationException: selector}), or the operation fails
      */
     public Object sendAs(Object subject, Object receiver, String selector, Object... args) {
-        if (exitStatus != null) {
+        if (exited()) {
             throw new PonderError("the cell has exited");
         }
         Object[] converted = new Object[args.length];
@@ -271,7 +313,7 @@ public final class Cell {
 
     /** Raises an event of a template from Java, as {@link #raise(String, Object...)} does. */
     public boolean raise(EventTemplate template, Object... values) {
-        if (exitStatus != null) {
+        if (exited()) {
             return false;
         }
         try {
@@ -295,6 +337,7 @@ public final class Cell {
 
     /** The status given to {@code root exit}, once it has run. */
     public OptionalInt exitStatus() {
+        exited();
         return exitStatus == null ? OptionalInt.empty() : OptionalInt.of(exitStatus);
     }
 

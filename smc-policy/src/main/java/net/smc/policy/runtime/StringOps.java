@@ -42,6 +42,12 @@ final class StringOps {
         return self.isEmpty();
     }
 
+    /** Parses the string as XML (a standard object of {@code net.smc.policy.stdlib}). */
+    @Op("asXML")
+    static Object asXML(String self) {
+        return net.smc.policy.stdlib.StandardObjects.parseXml(self);
+    }
+
     /** Resolves the string as a path: absolute when it starts with '/', else from root. */
     @Op("asObject")
     static Object asObject(CallContext ctx, String self) {
