@@ -17,6 +17,7 @@ import net.smc.policy.lang.Unit;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
+import net.smc.policy.runtime.Execution;
 import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
 import net.smc.policy.runtime.PonderError;
@@ -279,7 +280,12 @@ public final class Cell {
             for (int i = 0; i < values.length; i++) {
                 converted[i] = CellRuntime.fromJava(values[i]);
             }
-            template.raise(runtime.newExecution(), converted);
+            Execution ex = runtime.newExecution();
+            try {
+                template.raise(ex, converted);
+            } finally {
+                runtime.finish(ex);
+            }
             return true;
         } catch (PonderError e) {
             runtime.report(new Diagnostic(e.pos(), "raise: " + e.getMessage()));

@@ -149,6 +149,26 @@ public final class CellRuntime {
         config.errors().accept(diagnostic);
     }
 
+    /**
+     * Reports an error of a run, unless the run has already reported {@link Limits#maxErrorsPerRun}:
+     * then it is only counted, and {@link #finish} reports the count.
+     */
+    void report(Execution ex, Diagnostic diagnostic) {
+        if (ex.admitError()) {
+            report(diagnostic);
+        }
+    }
+
+    /** Ends a run: reports how many of its errors were suppressed, if any were. */
+    public void finish(Execution ex) {
+        long suppressed = ex.errorsSuppressed();
+        if (suppressed > 0) {
+            report(new Diagnostic(null, suppressed + " more error" + (suppressed == 1 ? "" : "s")
+                    + " of this run suppressed (only the first " + config.limits().maxErrorsPerRun()
+                    + " are reported)"));
+        }
+    }
+
     /** Also gives every diagnostic to {@code listener} until {@link #unlisten} removes it. */
     public void listen(Consumer<Diagnostic> listener) {
         listeners.add(listener);
@@ -239,6 +259,7 @@ public final class CellRuntime {
                     + "; lower the nesting or the call depth limit"));
             return null;
         } finally {
+            finish(ex);
             if (variables != null) {
                 Map<String, Object> kept = new HashMap<>(variables.values);
                 kept.putAll(frame.locals());
