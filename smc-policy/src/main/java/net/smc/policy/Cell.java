@@ -1,7 +1,6 @@
 package net.smc.policy;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -13,6 +12,7 @@ import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.Unit;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.Domain;
@@ -128,7 +128,7 @@ public final class Cell {
     public RunResult runFile(Path file) {
         String text;
         try {
-            text = Files.readString(file);
+            text = SourceFiles.read(file, runtime.limits().maxUnitChars());
         } catch (IOException | java.io.UncheckedIOException e) {
             Diagnostic cannotRead = new Diagnostic(null, file + ": cannot read: " + e.getMessage());
             runtime.report(cannotRead);

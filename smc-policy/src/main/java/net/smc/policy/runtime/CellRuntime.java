@@ -19,6 +19,7 @@ import net.smc.policy.Limits;
 import net.smc.policy.PolicyRepository;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.SourcePos;
 import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
@@ -301,7 +302,7 @@ public final class CellRuntime {
             return null;
         }
         try {
-            String text = Files.readString(file);
+            String text = SourceFiles.read(file, config.limits().maxUnitChars());
             String source = PolicyRepository.isUri(shown) ? shown : file.getFileName().toString();
             files.put(source, file.toAbsolutePath().normalize());
             return new IncludeResolver.Included(source, text);
