@@ -57,10 +57,20 @@ final class NodeFiles {
     }
 
     private final Path workingDir;
+    private final List<Path> allowedDirs;
 
     /** Files given relative are read from {@code workingDir}. */
     NodeFiles(Path workingDir) {
+        this(workingDir, List.of());
+    }
+
+    /**
+     * Files given relative are read from {@code workingDir}; the mission's class may also be in one
+     * of {@code allowedDirs} (relative ones from {@code workingDir}), not only beside its instance.
+     */
+    NodeFiles(Path workingDir, List<Path> allowedDirs) {
         this.workingDir = workingDir;
+        this.allowedDirs = allowedDirs.stream().map(workingDir::resolve).toList();
     }
 
     /**
@@ -106,7 +116,7 @@ final class NodeFiles {
     private Mission mission(Path given, PolicyRepository repository) throws Refused {
         Path file = readable("--mission", given);
         try {
-            return new MissionLoader(repository).load(file);
+            return new MissionLoader(repository, allowedDirs).load(file);
         } catch (IOException e) {
             throw new Refused("--mission " + given + ": cannot read it: " + e.getMessage());
         } catch (MissionException e) {
