@@ -80,7 +80,7 @@ final class NodeFiles {
      */
     Node read(Path key, Path credential, Path authority, Path mission, PolicyRepository repository, long nowMillis)
             throws Refused {
-        SigningKey signingKey = readFile("--key", key, KeyFiles::parsePrivateKey);
+        SigningKey signingKey = vehicleKey(key);
         Credential cred = readFile("--credential", credential, KeyFiles::parseCredential);
         VerificationKey authorityKey = readFile("--authority", authority, KeyFiles::parsePublicKey);
         if (!cred.vehicleKey().equals(signingKey.verificationKey())) {
@@ -140,6 +140,18 @@ final class NodeFiles {
             throw new Refused(option + " " + e.getMessage());
         } catch (IOException e) {
             throw new Refused(option + " " + given + ": cannot read it: " + e.getMessage());
+        }
+    }
+
+    /** A vehicle's private key, readable by its owner only. */
+    private SigningKey vehicleKey(Path given) throws Refused {
+        Path file = readable("--key", given);
+        try {
+            return KeyFiles.readPrivateKey(file, KeyFiles.Use.VEHICLE);
+        } catch (KeyFileException e) {
+            throw new Refused("--key " + e.getMessage());
+        } catch (IOException e) {
+            throw new Refused("--key " + given + ": cannot read it: " + e.getMessage());
         }
     }
 
