@@ -13,7 +13,6 @@ import net.smc.core.comm.CommunicationManager;
 import net.smc.core.comm.SenderSettings;
 import net.smc.core.discovery.Discovery;
 import net.smc.core.message.Identity;
-import net.smc.core.message.MessageType;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.role.PolicySource;
@@ -114,21 +113,17 @@ public final class Cell {
             }
 
             @Override
-            public Object credentialOf(String peer) {
-                if (auth == null) {
-                    return "unauthenticated";
-                }
-                return auth.credentialOf(peer).map(c -> (Object) c).orElse("none");
+            public Optional<Credential> credentialOf(String peer) {
+                return auth == null ? Optional.empty() : auth.credentialOf(peer);
             }
         };
-        this.protocol = new TeamProtocol(vehicle, slots, timing, comm, b.clock, b.scheduler, b.description, store,
-                b.repository, host, b.trace, random.nextLong(timing.comTimeoutMillis()));
+        this.protocol = new TeamProtocol(TeamContext.builder().self(vehicle).slots(slots).timing(timing).comm(comm)
+                .clock(b.clock).scheduler(b.scheduler).description(b.description).store(store)
+                .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
         new Discovery((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);
-        for (MessageType t : TeamProtocol.handledTypes()) {
-            router.register(protocol, t);
-        }
+        protocol.register(router);
         if (commanding) {
             loadRepository(b.repository);
         }

@@ -2,6 +2,7 @@ package net.smc.policy.runtime;
 
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import net.smc.policy.lang.Node;
 import net.smc.policy.lang.SourcePos;
@@ -145,7 +146,7 @@ public final class Interpreter {
         }
         ex.depth++;
         try {
-            Frame frame = new Frame(ex, code.free, block.captured, code.params, args);
+            Frame frame = new Frame(ex, code.free, block.captured, code.params, args, block.scope);
             for (int i = 0; i < extraNames.length; i++) {
                 frame.set(extraNames[i], extraValues[i]);
             }
@@ -232,6 +233,9 @@ public final class Interpreter {
         Object exec(Frame f) {
             if (!absolute) {
                 Object v = f.lookup(first);
+                if (v == null && first == Frame.VARIABLES) {
+                    v = f.variables();
+                }
                 if (v != null) {
                     return rest.length == 0 ? v : walk(v, rest);
                 }
@@ -293,17 +297,20 @@ public final class Interpreter {
         final String[] free;
         final Code[] body;
         final SourcePos pos;
+        /** Whether the code reads {@code Variables}, so a block must capture every visible variable. */
+        private final boolean readsVariables;
 
         BlockCode(String[] params, String[] free, Code[] body, SourcePos pos) {
             this.params = params;
             this.free = free;
+            this.readsVariables = List.of(free).contains(Frame.VARIABLES);
             this.body = body;
             this.pos = pos;
         }
 
         @Override
         Object exec(Frame f) {
-            return new Block(this, f.capture(free));
+            return new Block(this, f.capture(free), readsVariables ? f.snapshot() : Map.of());
         }
     }
 

@@ -34,6 +34,11 @@ public final class PHash {
         return map.containsKey(key);
     }
 
+    /** A read-only view of the entries by key, in insertion order. */
+    Map<String, Object> asMap() {
+        return java.util.Collections.unmodifiableMap(map);
+    }
+
     /** A read-only view of the entries, in insertion order. */
     public Set<Map.Entry<String, Object>> entries() {
         return java.util.Collections.unmodifiableMap(map).entrySet();
