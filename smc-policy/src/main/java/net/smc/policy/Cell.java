@@ -1,7 +1,6 @@
 package net.smc.policy;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -13,10 +12,12 @@ import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.Unit;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
+import net.smc.policy.runtime.Execution;
 import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
 import net.smc.policy.runtime.PonderError;
@@ -147,7 +148,7 @@ public final class Cell {
     public RunResult runFile(Path file) {
         String text;
         try {
-            text = Files.readString(file);
+            text = SourceFiles.read(file, runtime.limits().maxUnitChars());
         } catch (IOException | java.io.UncheckedIOException e) {
             Diagnostic cannotRead = new Diagnostic(null, file + ": cannot read: " + e.getMessage());
             runtime.report(cannotRead);
@@ -321,7 +322,12 @@ public final class Cell {
             for (int i = 0; i < values.length; i++) {
                 converted[i] = CellRuntime.fromJava(values[i]);
             }
-            template.raise(runtime.newExecution(), converted);
+            Execution ex = runtime.newExecution();
+            try {
+                template.raise(ex, converted);
+            } finally {
+                runtime.finish(ex);
+            }
             return true;
         } catch (PonderError e) {
             runtime.report(new Diagnostic(e.pos(), "raise: " + e.getMessage()));

@@ -21,6 +21,7 @@ import net.smc.policy.TimerScheduler;
 import net.smc.policy.stdlib.StandardObjects;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.SourcePos;
 import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
@@ -217,6 +218,26 @@ public final class CellRuntime {
         config.errors().accept(diagnostic);
     }
 
+    /**
+     * Reports an error of a run, unless the run has already reported {@link Limits#maxErrorsPerRun}:
+     * then it is only counted, and {@link #finish} reports the count.
+     */
+    void report(Execution ex, Diagnostic diagnostic) {
+        if (ex.admitError()) {
+            report(diagnostic);
+        }
+    }
+
+    /** Ends a run: reports how many of its errors were suppressed, if any were. */
+    public void finish(Execution ex) {
+        long suppressed = ex.errorsSuppressed();
+        if (suppressed > 0) {
+            report(new Diagnostic(null, suppressed + " more error" + (suppressed == 1 ? "" : "s")
+                    + " of this run suppressed (only the first " + config.limits().maxErrorsPerRun()
+                    + " are reported)"));
+        }
+    }
+
     /** Also gives every diagnostic to {@code listener} until {@link #unlisten} removes it. */
     public void listen(Consumer<Diagnostic> listener) {
         listeners.add(listener);
@@ -351,6 +372,7 @@ public final class CellRuntime {
                     + "; lower the nesting or the call depth limit"));
             return null;
         } finally {
+            finish(ex);
             if (variables != null) {
                 variables.values = frame.kept();
             }
@@ -390,7 +412,7 @@ public final class CellRuntime {
             return null;
         }
         try {
-            String text = Files.readString(file);
+            String text = SourceFiles.read(file, config.limits().maxUnitChars());
             String source = PolicyRepository.isUri(shown) ? shown : file.getFileName().toString();
             files.put(source, file.toAbsolutePath().normalize());
             return new IncludeResolver.Included(source, text);

@@ -16,8 +16,10 @@ public final class Root extends Domain {
 
     /** Prints the argument's printed form as one line on the cell's output; answers the argument. */
     @Op("print:")
-    public Object print(Object value) {
-        runtime().print(Values.print(value));
+    public Object print(CallContext ctx, Object value) {
+        String line = Values.print(value);
+        ctx.execution().charge(line.length(), "print:");
+        runtime().print(line);
         return value;
     }
 
