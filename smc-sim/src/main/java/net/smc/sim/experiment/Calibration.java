@@ -25,13 +25,17 @@ import net.smc.policy.RunResult;
  * Measures, on this machine, what the operations {@link CpuCharge} charges cost this engine (the
  * project's Ed25519 keys and codec, the JDK's HMAC-SHA256 and X25519 as the security layer uses
  * them, the PonderTalk engine loading a generated role-mission and offering an event to policies):
- * the calibration step of the set-up time experiment. Each operation is repeated after a warm-up and
- * the median of several timed batches is kept, so a busy machine inflates it less. This is the one
+ * the calibration step of the set-up time experiment. Each operation is warmed up for half a second
+ * (so the JIT has compiled it), then timed in several batches of at least 50 ms, and the fastest
+ * batch is kept: on a machine shared with other work the fastest batch is the one least slowed by
+ * it, closest to what the operation costs a CPU of its own. This is the one
  * part of the experiment that reads the wall clock; the costs it returns are then applied
  * deterministically ({@link CpuCosts#save}, {@link CpuCosts#load}).
  */
 public final class Calibration {
-    private static final int BATCHES = 7;
+    private static final int BATCHES = 5;
+    private static final long WARM_UP_NANOS = 500_000_000L;
+    private static final long BATCH_NANOS = 50_000_000L;
 
     private Calibration() {
     }
@@ -47,13 +51,13 @@ public final class Calibration {
         VerificationKey pub = key.verificationKey();
         byte[] msg = new byte[200];
         byte[] sig = key.sign(msg);
-        double sign = time(200, () -> key.sign(msg));
-        double verify = time(200, () -> pub.verify(msg, sig));
+        double sign = time(20, () -> key.sign(msg));
+        double verify = time(20, () -> pub.verify(msg, sig));
 
         KeyPairGenerator x = KeyPairGenerator.getInstance("X25519");
         KeyPair a = x.generateKeyPair();
         KeyPair b = x.generateKeyPair();
-        double agree = time(200, () -> {
+        double agree = time(20, () -> {
             KeyAgreement ka = KeyAgreement.getInstance("X25519");
             ka.init(a.getPrivate());
             ka.doPhase(b.getPublic(), true);
@@ -64,8 +68,8 @@ public final class Calibration {
         mac.init(new SecretKeySpec(new byte[32], "HmacSHA256"));
         byte[] small = new byte[64];
         byte[] large = new byte[1_400];
-        double macSmall = time(5_000, () -> mac.doFinal(small));
-        double macLarge = time(5_000, () -> mac.doFinal(large));
+        double macSmall = time(100, () -> mac.doFinal(small));
+        double macLarge = time(100, () -> mac.doFinal(large));
         double macPerByte = Math.max(0, (macLarge - macSmall) / (large.length - small.length));
         double macFixed = Math.max(0, macSmall - macPerByte * small.length);
 
@@ -75,8 +79,8 @@ public final class Calibration {
         Envelope policy = new Envelope("b0l1n0", 2, new PolicyReply(1, "policy:/roles/b0l1/mission", 1, "x".repeat(1_200)));
         int hbBytes = encoder.datagrams(hb).get(0).length;
         int policyBytes = encoder.datagrams(policy).get(0).length;
-        double codecSmall = time(5_000, () -> decoder.decode(encoder.datagrams(hb).get(0))) / 2;
-        double codecLarge = time(5_000, () -> decoder.decode(encoder.datagrams(policy).get(0))) / 2;
+        double codecSmall = time(100, () -> decoder.decode(encoder.datagrams(hb).get(0))) / 2;
+        double codecLarge = time(100, () -> decoder.decode(encoder.datagrams(policy).get(0))) / 2;
         double codecPerByte = Math.max(0, (codecLarge - codecSmall) / (policyBytes - hbBytes));
         double codecFixed = Math.max(0, codecSmall - codecPerByte * hbBytes);
 
@@ -103,7 +107,7 @@ public final class Calibration {
                     .append("\"]; action: [:uav | root print: uav]. p active: true.\n");
         }
         check(cell.run("conditions", conditions.toString()));
-        double raise = time(500, () -> cell.raise("root/event/newUAV", "newUAV", "b0l1n0", "summary", "credential"));
+        double raise = time(50, () -> cell.raise("root/event/newUAV", "newUAV", "b0l1n0", "summary", "credential"));
         double condition = raise / policies;
 
         return new CpuCosts(sign, verify, agree, macFixed, macPerByte, codecFixed, codecPerByte, loadPerByte, condition);
@@ -115,21 +119,25 @@ public final class Calibration {
         }
     }
 
-    /** The median over batches of the time of one call, in ns. */
-    private static double time(int perBatch, Work work) throws Exception {
-        for (int i = 0; i < perBatch; i++) {
-            work.run();   // warm-up
+    /** The fastest batch's time of one call, in ns ({@code minCalls}: at least this many calls per batch). */
+    private static double time(int minCalls, Work work) throws Exception {
+        long warm = System.nanoTime();
+        while (System.nanoTime() - warm < WARM_UP_NANOS) {
+            work.run();
         }
-        double[] batches = new double[BATCHES];
+        double best = Double.MAX_VALUE;
         for (int b = 0; b < BATCHES; b++) {
             long t0 = System.nanoTime();
-            for (int i = 0; i < perBatch; i++) {
+            long calls = 0;
+            long elapsed;
+            do {
                 work.run();
-            }
-            batches[b] = (System.nanoTime() - t0) / (double) perBatch;
+                calls++;
+                elapsed = System.nanoTime() - t0;
+            } while (calls < minCalls || elapsed < BATCH_NANOS);
+            best = Math.min(best, elapsed / (double) calls);
         }
-        java.util.Arrays.sort(batches);
-        return batches[BATCHES / 2];
+        return best;
     }
 
     @FunctionalInterface
