@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -10,7 +10,9 @@ import java.util.Optional;
 import java.util.TreeMap;
 
 import net.smc.core.capability.CapabilityDescription;
-import net.smc.core.cell.sim.SimVehicle;
+import net.smc.core.cell.CellView;
+import net.smc.core.cell.MissionState;
+import net.smc.core.cell.Missions;
 import org.junit.jupiter.api.Test;
 
 /** The view-based safety rules and settling goal that {@link TeamOverUdpTest} checks at every poll. */

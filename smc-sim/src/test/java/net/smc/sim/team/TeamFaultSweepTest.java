@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -6,11 +6,11 @@ import java.util.List;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
 
-import net.smc.core.cell.sim.FaultSchedule;
-import net.smc.core.cell.sim.InvariantViolation;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
+
+import net.smc.core.cell.Missions;
 
 /**
  * Seeded fault schedules ({@link FaultSchedule}) on whole simulated teams: every invariant after

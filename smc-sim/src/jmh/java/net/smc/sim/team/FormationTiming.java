@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -13,8 +13,8 @@ import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.function.Predicate;
 
-import net.smc.core.cell.sim.SimVehicle;
-import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.core.cell.CellEvent;
+import net.smc.core.cell.CellHost;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.udp.UdpEventLoop;

@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import java.util.HashMap;
 import java.util.HashSet;
@@ -9,6 +9,10 @@ import java.util.Optional;
 import java.util.Set;
 
 import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.cell.CellView;
+import net.smc.core.cell.Scheme;
+import net.smc.core.cell.Seat;
+import net.smc.core.cell.Slots;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.team.TeamConfiguration;

@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import java.util.Collection;
 import java.util.Map;
@@ -7,6 +7,7 @@ import java.util.SplittableRandom;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.UnaryOperator;
 
+import net.smc.core.cell.CellHost;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.ForwardingTransport;
 import net.smc.core.transport.Receiver;

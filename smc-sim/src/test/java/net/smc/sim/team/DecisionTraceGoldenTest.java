@@ -1,4 +1,4 @@
-package net.smc.core.cell.sim;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -40,7 +40,7 @@ class DecisionTraceGoldenTest {
     private static final long FAULT_MILLIS = 20_000;
     /** Seeds whose whole trace is kept beside the digests. */
     private static final Set<Long> FULL = Set.of(1L, 2L, 3L, 4L);
-    private static final String RESOURCE = "net/smc/core/cell/sim/decision-traces/";
+    private static final String RESOURCE = "net/smc/sim/team/decision-traces/";
     private static final boolean UPDATE = Boolean.getBoolean("smc.golden.update");
 
     /** One seed's run: its scheme, and its trace (one line per event). */
@@ -138,7 +138,7 @@ class DecisionTraceGoldenTest {
 
     private static void update() throws IOException {
         Path dir = Path.of(System.getProperty("smc.project.dir", "../"))
-                .resolve("smc-core/src/test/resources").resolve(RESOURCE);
+                .resolve("smc-sim/src/test/resources").resolve(RESOURCE);
         Files.createDirectories(dir);
         StringBuilder summary = new StringBuilder("# seed scheme events sha256 (DecisionTraceGoldenTest; faults for "
                 + FAULT_MILLIS + " ms)\n");

@@ -1,4 +1,4 @@
-package net.smc.core.cell.sim;
+package net.smc.sim.team;
 
 import java.util.List;
 

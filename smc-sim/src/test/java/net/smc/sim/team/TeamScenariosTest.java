@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -13,9 +13,10 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.function.BooleanSupplier;
 
-import net.smc.core.cell.sim.InvariantViolation;
-import net.smc.core.cell.sim.SimVehicle;
-import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.core.cell.Cell;
+import net.smc.core.cell.MissionState;
+import net.smc.core.cell.Seat;
+import net.smc.core.cell.Missions;
 import net.smc.core.message.Identity;
 import net.smc.core.mission.Mission;
 import org.junit.jupiter.api.Test;
@@ -249,7 +250,7 @@ class TeamScenariosTest {
         List<List<String>> traces = new ArrayList<>();
         for (int i = 0; i < 2; i++) {
             TeamSimulation sim = sim(14, SimVehicle.reconnaissance(2, 1, 2, 2));
-            sim.link(net.smc.core.cell.sim.TeamInvariants.lossy(0.2));
+            sim.link(net.smc.sim.team.TeamInvariants.lossy(0.2));
             sim.start();
             sim.run(8_000);
             sim.crash("s1");

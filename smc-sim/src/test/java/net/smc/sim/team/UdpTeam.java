@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -20,8 +20,11 @@ import java.util.function.Function;
 import java.util.function.Predicate;
 
 import net.smc.core.capability.CapabilityDescription;
-import net.smc.core.cell.sim.SimVehicle;
-import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.core.cell.Cell;
+import net.smc.core.cell.CellEvent;
+import net.smc.core.cell.CellHost;
+import net.smc.core.cell.CellView;
+import net.smc.core.cell.Missions;
 import net.smc.core.mission.Mission;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;

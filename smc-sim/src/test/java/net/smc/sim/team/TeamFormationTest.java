@@ -1,14 +1,15 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Optional;
 
-import net.smc.core.cell.sim.InvariantViolation;
-import net.smc.core.cell.sim.SimVehicle;
-import net.smc.core.cell.sim.TeamSimulation;
 import org.junit.jupiter.api.Test;
+
+import net.smc.core.cell.Cell;
+import net.smc.core.cell.MissionState;
+import net.smc.core.cell.Missions;
 
 class TeamFormationTest {
 

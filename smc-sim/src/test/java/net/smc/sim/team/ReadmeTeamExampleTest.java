@@ -1,11 +1,10 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 
-import net.smc.core.cell.sim.SimVehicle;
-import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.core.cell.Missions;
 import net.smc.core.mission.Mission;
 import net.smc.policy.PolicyRepository;
 import org.junit.jupiter.api.Test;

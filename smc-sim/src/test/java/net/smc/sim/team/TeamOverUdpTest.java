@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -21,7 +21,11 @@ import java.util.function.Consumer;
 import java.util.function.Predicate;
 import java.util.stream.Stream;
 
-import net.smc.core.cell.sim.SimVehicle;
+import net.smc.core.cell.Cell;
+import net.smc.core.cell.CellHost;
+import net.smc.core.cell.CellView;
+import net.smc.core.cell.MissionState;
+import net.smc.core.cell.Missions;
 import net.smc.core.mission.Mission;
 import net.smc.core.transport.udp.UdpEventLoop;
 import org.junit.jupiter.api.AfterAll;

@@ -1,4 +1,4 @@
-package net.smc.core.cell;
+package net.smc.sim.team;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -11,9 +11,8 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
-import net.smc.core.cell.sim.InvariantViolation;
-import net.smc.core.cell.sim.SimVehicle;
-import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.core.cell.Cell;
+import net.smc.core.cell.Missions;
 import net.smc.core.role.TaskProvider;
 import net.smc.core.task.Task;
 import net.smc.core.task.TaskInterface;
