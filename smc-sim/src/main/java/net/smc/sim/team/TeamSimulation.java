@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.BiConsumer;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import java.util.function.Function;
@@ -20,6 +21,7 @@ import java.util.function.Function;
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
+import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.mission.Mission;
 import net.smc.core.role.TaskProvider;
 import net.smc.core.security.Claims;
@@ -36,6 +38,10 @@ import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
 import net.smc.policy.PolicyRepository;
+import net.smc.policy.RunResult;
+import net.smc.sim.task.TaskCatalog;
+import net.smc.sim.world.Arena;
+import net.smc.sim.world.SimWorld;
 
 /**
  * A whole team of cells on the in-memory network and one virtual clock: the deterministic
@@ -46,6 +52,11 @@ import net.smc.policy.PolicyRepository;
  * checked, and a violation throws {@link InvariantViolation} with the seed and the end of the
  * trace. Faults are applied between steps: crashes and restarts, partitions and heals, link
  * profiles (loss, duplication, re-ordering, delay), joins and leaves.
+ *
+ * <p>A simulation may have a world ({@link Builder#world}): each vehicle placed at a start of the
+ * arena gets a robot there, each placed at a station is a cell without one; their tasks come
+ * from a {@link TaskCatalog} on that hardware, their capability descriptions from those tasks,
+ * and the world's radio carries their traffic ({@link WorldTeam}).
  *
  * <pre>{@code
  * TeamSimulation sim = TeamSimulation.builder(mission, repository, seed)
@@ -89,6 +100,8 @@ public final class TeamSimulation {
     private final Function<String, TaskProvider> tasks;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
+    private final WorldTeam world;
+    private final BiConsumer<String, String> output;
     private int nextPort = 5000;
     private long restarts;
 
@@ -118,8 +131,17 @@ public final class TeamSimulation {
         this.trust = trust(mission.instanceName());
         this.ideal = new IdealAuthentication(trust, sim);
         this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
+        this.output = b.output;
+        this.world = b.arena == null ? null : new WorldTeam(this, SimWorld.builder(b.arena, sim).seed(seed).build(),
+                b.catalog, b.places, b.standalone);
+        if (world != null) {
+            network.setRadio(world.world().radio());
+        }
         for (SimVehicle v : b.vehicles) {
             add(v);
+        }
+        if (world != null) {
+            world.checkPlaces(nodes.keySet());
         }
     }
 
@@ -129,6 +151,9 @@ public final class TeamSimulation {
 
     /** Starts every vehicle's cell. */
     public void start() {
+        if (world != null) {
+            world.start();
+        }
         for (Node n : nodes.values()) {
             if (n.cell == null) {
                 boot(n, n.spec.commander());
@@ -150,6 +175,9 @@ public final class TeamSimulation {
         }
         Node n = new Node(v, Address.loopback(nextPort++));
         nodes.put(v.id(), n);
+        if (world != null) {
+            world.bind(v.id(), n.address);
+        }
         return n;
     }
 
@@ -162,15 +190,30 @@ public final class TeamSimulation {
                     .random(seeded(seed * 31 + n.address.port())).build());
         };
         n.transport = raw;
-        Cell.Builder b = Cell.builder(n.spec.id(), mission, n.spec.description())
+        TaskProvider provider = world != null && world.placed(n.spec.id()) ? world.tasks(n.spec.id()) : tasks.apply(n.spec.id());
+        CapabilityDescription description = world != null && world.placed(n.spec.id())
+                ? world.describe(n.spec) : n.spec.description();
+        Cell.Builder b = Cell.builder(n.spec.id(), mission, description)
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
-                .trace(this::record).tasks(tasks.apply(n.spec.id()));
+                .trace(this::record).tasks(provider)
+                .output(line -> output.accept(n.spec.id(), line));
         if (scheme != null) {
             b.scheme(scheme);
         }
         n.cell = b.build();
+        if (world != null) {
+            world.install(n.spec.id(), n.cell);
+        }
         n.cell.start();
+        if (world != null) {
+            world.booted(n.spec.id(), n.cell, provider);
+        }
+    }
+
+    /** Loads a repository file into a vehicle's running cell; errors name the file. */
+    RunResult load(Cell cell, String uri) {
+        return cell.engine().load(uri);
     }
 
     /** Crashes a vehicle: its cell stops and its endpoint goes silent. */
@@ -299,15 +342,42 @@ public final class TeamSimulation {
 
     /** The groups of vehicles that can hear each other (one group when there is no partition). */
     public List<Set<String>> parts() {
-        if (partition.isEmpty()) {
-            return List.of(new HashSet<>(nodes.keySet()));
+        List<Set<String>> parts = partition.isEmpty() ? List.of(new HashSet<>(nodes.keySet())) : List.copyOf(partition);
+        if (world == null) {
+            return parts;
         }
-        return List.copyOf(partition);
+        // In a world, a robot whose radio is off hears no one: it is a part of its own.
+        Set<String> silent = world.silent();
+        if (silent.isEmpty()) {
+            return parts;
+        }
+        List<Set<String>> out = new ArrayList<>();
+        for (Set<String> p : parts) {
+            Set<String> rest = new HashSet<>(p);
+            rest.removeAll(silent);
+            out.add(rest);
+        }
+        silent.forEach(v -> out.add(Set.of(v)));
+        return out;
     }
 
     /** The acting commanders among live honest cells. */
     public List<Cell> commanders() {
         return cells().stream().filter(Cell::isActingCommander).toList();
+    }
+
+    /** The world's side of the simulation, or null when it has no world. */
+    public WorldTeam world() {
+        return world;
+    }
+
+    /** The scheduler of the virtual clock (the world steps on it too). */
+    public SimulationScheduler scheduler() {
+        return sim;
+    }
+
+    Address address(String vehicle) {
+        return node(vehicle).address;
     }
 
     public InMemoryNetwork network() {
@@ -393,6 +463,11 @@ public final class TeamSimulation {
         private long mergeBoundMillis = -1;
         private Consumer<CellEvent> listener = e -> { };
         private Function<String, TaskProvider> tasks = id -> TaskProvider.NONE;
+        private BiConsumer<String, String> output = (vehicle, line) -> { };
+        private Arena arena;
+        private TaskCatalog catalog = TaskCatalog.standard();
+        private final Map<String, String> places = new LinkedHashMap<>();
+        private final Map<String, List<String>> standalone = new LinkedHashMap<>();
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -447,9 +522,58 @@ public final class TeamSimulation {
             return this;
         }
 
+        /** Receives what each vehicle's policies print, with the vehicle's id. */
+        public Builder output(BiConsumer<String, String> output) {
+            this.output = Objects.requireNonNull(output, "output");
+            return this;
+        }
+
+        /**
+         * Puts the team in a world on this arena: the world steps on the simulation's clock, and
+         * its radio carries the traffic of every vehicle ({@link #place} says where each is).
+         */
+        public Builder world(Arena arena) {
+            this.arena = Objects.requireNonNull(arena, "arena");
+            return this;
+        }
+
+        /** The tasks of placed vehicles, by name (default {@link TaskCatalog#standard()}). */
+        public Builder catalog(TaskCatalog catalog) {
+            this.catalog = Objects.requireNonNull(catalog, "catalog");
+            return this;
+        }
+
+        /**
+         * Places a vehicle in the world: at the arena's start {@code startOrStation} (it gets a
+         * robot there) or at its station of that id (a cell without a robot). Every vehicle of a
+         * simulation with a world must be placed.
+         */
+        public Builder place(String vehicle, String startOrStation) {
+            Objects.requireNonNull(vehicle, "vehicle");
+            Objects.requireNonNull(startOrStation, "startOrStation");
+            if (places.containsKey(vehicle)) {
+                throw new IllegalArgumentException("vehicle '" + vehicle + "' is placed already (at '" + places.get(vehicle) + "')");
+            }
+            places.put(vehicle, startOrStation);
+            return this;
+        }
+
+        /**
+         * Makes a placed vehicle stand outside the mission's roles: its tasks are started when its
+         * cell boots and the repository files {@code policyUris} are loaded into it (the soldier's
+         * wearable computer, say, whose policies drive its Beacon).
+         */
+        public Builder standalone(String vehicle, List<String> policyUris) {
+            standalone.put(Objects.requireNonNull(vehicle, "vehicle"), List.copyOf(policyUris));
+            return this;
+        }
+
         public TeamSimulation build() {
             if (vehicles.isEmpty()) {
                 throw new IllegalStateException("a simulation needs vehicles");
+            }
+            if (arena == null && (!places.isEmpty() || !standalone.isEmpty())) {
+                throw new IllegalStateException("vehicles are placed, but the simulation has no world; call world(arena)");
             }
             return new TeamSimulation(this);
         }
