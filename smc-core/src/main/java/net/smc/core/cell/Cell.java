@@ -144,12 +144,7 @@ public final class Cell {
 
             @Override
             public void deliver(Caller caller, String role, String event, List<Object> values) {
-                Object[] all = new Object[values.size() + 1];
-                all[0] = event;
-                for (int i = 0; i < values.size(); i++) {
-                    all[i + 1] = values.get(i);
-                }
-                gateway.raise(caller, role, event, all);
+                gateway.raise(caller, role, event, values.toArray());
             }
 
             @Override

@@ -141,6 +141,11 @@ final class Collaboration {
 
     void onInvocationResult(Envelope env, InvocationResult r) {
         String what = pending.remove(r.inReplyTo());
+        if (what == null && !r.ok()) {
+            ctx.emit(CellEvent.Kind.REJECTED, "error answer from " + env.sender() + " to message " + r.inReplyTo() + ": "
+                    + r.error());
+            return;
+        }
         if (what == null) {
             ctx.reject(env, "result of call " + r.inReplyTo() + ", which this cell is not waiting for"
                     + (r.ok() ? "" : " (error: " + r.error() + ")"));
