@@ -35,7 +35,7 @@ class MessageTypeTest {
 
     @Test
     void fromCode_refusesReservedAndUnassignedCodes() {
-        for (int code : new int[] {0x00, 0x12, WireFormat.FRAGMENT_CODE, -1, 256}) {
+        for (int code : new int[] {0x00, 0x13, WireFormat.FRAGMENT_CODE, -1, 256}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> MessageType.fromCode(code));
             assertEquals("message type code " + code + " is not assigned; assigned codes are 1 to 18", e.getMessage());
         }
