@@ -98,6 +98,7 @@ public final class TeamSimulation {
     private final Deque<String> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
     private final Function<String, TaskProvider> tasks;
+    private final net.smc.policy.AuthMode auth;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
     private final WorldTeam world;
@@ -120,6 +121,7 @@ public final class TeamSimulation {
 
     private TeamSimulation(Builder b) {
         this.tasks = b.tasks;
+        this.auth = b.auth;
         this.mission = b.mission;
         this.repository = b.repository;
         this.seed = b.seed;
@@ -197,7 +199,7 @@ public final class TeamSimulation {
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
                 .trace(this::record).tasks(provider)
-                .output(line -> output.accept(n.spec.id(), line));
+                .output(line -> output.accept(n.spec.id(), line)).auth(auth);
         if (scheme != null) {
             b.scheme(scheme);
         }
@@ -468,6 +470,7 @@ public final class TeamSimulation {
         private TaskCatalog catalog = TaskCatalog.standard();
         private final Map<String, String> places = new LinkedHashMap<>();
         private final Map<String, List<String>> standalone = new LinkedHashMap<>();
+        private net.smc.policy.AuthMode auth = net.smc.policy.AuthMode.OFF;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -565,6 +568,12 @@ public final class TeamSimulation {
          */
         public Builder standalone(String vehicle, List<String> policyUris) {
             standalone.put(Objects.requireNonNull(vehicle, "vehicle"), List.copyOf(policyUris));
+            return this;
+        }
+
+        /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
+        public Builder auth(net.smc.policy.AuthMode mode) {
+            this.auth = Objects.requireNonNull(mode, "auth");
             return this;
         }
 

@@ -31,8 +31,9 @@ import net.smc.sim.world.WorldStepListener;
  * replacement, Table II); a station's control loops run once per world step.
  */
 public final class WorldTeam {
-    /** Map resolution of each vehicle's own occupancy grid, metres. */
-    private static final double MAP_RESOLUTION = 0.1;
+    /** Map resolution of each vehicle's own occupancy grid, metres: coarse enough that a task state
+     *  with the map (the Aggregator's) fits the wire's list limit of 64 elements on a 12 x 8 m arena. */
+    private static final double MAP_RESOLUTION = 0.25;
     /** World steps between two position reports of a robot. */
     private static final int REPORT_EVERY = 5;
 
