@@ -197,11 +197,34 @@ public final class RescueScenario {
 
     /** Runs the rescue until assistance is delivered, something goes wrong, or the time limit. */
     public Outcome run() {
+        start();
+        advance(settings.limitMillis());
+        return finish();
+    }
+
+    /** Starts the cells and wounds the soldier (step (i)); then {@link #advance} and {@link #finish}. */
+    public void start() {
         team.start();
         row(0, "wearable", "WOUNDED", "the soldier is wounded: critical", "i");
         team.cell("wearable").engine().raise("root/event/wounded", "wounded", "critical");
         scene.caption("(ii) the wearable computer calls for help");
-        team.runUntil(() -> assisted().isPresent() || trouble != null, settings.limitMillis());
+    }
+
+    /** Runs for at most {@code millis} of mission time, less if the run ends. */
+    public void advance(long millis) {
+        long left = settings.limitMillis() - team.nowMillis();
+        if (!finished() && left > 0) {
+            team.runUntil(this::finished, Math.min(millis, left));
+        }
+    }
+
+    /** Whether the run is over: assistance delivered, trouble, or the time limit. */
+    public boolean finished() {
+        return assisted().isPresent() || trouble != null || team.nowMillis() >= settings.limitMillis();
+    }
+
+    /** Ends the run and tells how it went. */
+    public Outcome finish() {
         if (film != null) {
             film.capture(world.world());
         }
