@@ -130,6 +130,7 @@ public final class RescueScenario {
     private String secondSurveyor;
     private double closest = Double.NaN;
     private String trouble;
+    private boolean zoneMarked;
 
     private RescueScenario(Mission mission, PolicyRepository repository, Arena arena, Settings settings,
                            Consumer<Timeline.Row> printer) {
@@ -272,10 +273,17 @@ public final class RescueScenario {
             }
         }
         if (firstSurveyor != null && firstStop >= 0) {
-            roles.put(firstSurveyor, "surveyor (stopped)");
+            roles.put(firstSurveyor, "former surveyor");
         }
         if (firstSurveyor == null) {
             surveyor().ifPresent(s -> firstSurveyor = s);
+        }
+        if (secondSurveyor != null && !zoneMarked && team.cell(secondSurveyor) != null) {
+            List<Object> state = team.cell(secondSurveyor).handedOver();
+            if (state.size() >= 2 && state.get(0) instanceof Number x && state.get(1) instanceof Number y) {
+                scene.mark(new Mark.AvoidedZone(x.doubleValue(), y.doubleValue(), 1.7, "zone avoided by " + secondSurveyor));
+                zoneMarked = true;
+            }
         }
         if (secondSurveyor != null) {
             SimRobot robot = world.robot(secondSurveyor).orElseThrow();
@@ -324,10 +332,6 @@ public final class RescueScenario {
         }
         row(e.timeMillis(), e.vehicle(), e.kind().name(), e.detail(), step);
         if (step.equals("v") && e.kind() == CellEvent.Kind.ACCEPTED && e.vehicle().equals(secondSurveyor)) {
-            List<Object> state = team.cell(secondSurveyor).handedOver();
-            if (state.size() >= 2 && state.get(0) instanceof Number x && state.get(1) instanceof Number y) {
-                scene.mark(new Mark.AvoidedZone(x.doubleValue(), y.doubleValue(), 1.7, "zone avoided by " + secondSurveyor));
-            }
             scene.caption("(v) " + secondSurveyor + " takes over the surveyor role");
         }
     }
