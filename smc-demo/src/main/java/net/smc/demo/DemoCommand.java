@@ -25,7 +25,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code smc demo [rescue] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P]}: runs the
+ * {@code smc demo [rescue] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P] [--limit S]}: runs the
  * paper's rescue (section IV-C) with cells and policies in the simulated world, prints its
  * timeline as it happens, and writes {@code rescue.png} (in the spirit of Fig. 7),
  * {@code rescue.gif} and {@code rescue-timeline.csv} into DIR. Exit 0 when assistance reached the
@@ -58,6 +58,9 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--loss", defaultValue = "0", paramLabel = "P", description = "extra datagram loss, 0 to below 1 (default 0)")
     double loss;
 
+    @Option(names = "--limit", defaultValue = "180", paramLabel = "SECONDS", description = "mission time after which the run gives up (default 180)")
+    double limit;
+
     @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp", description = "sim (default); udp is not available yet")
     String transport;
 
@@ -83,9 +86,12 @@ final class DemoCommand implements Callable<Integer> {
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new ParameterException(spec.commandLine(), "--speed " + speed + " must be a positive number");
         }
+        if (!(limit > 0) || limit > 86_400) {
+            throw new ParameterException(spec.commandLine(), "--limit " + limit + " must be above 0 and at most 86400 seconds");
+        }
         Path dir = io.workingDir().resolve(out);
         Files.createDirectories(dir);
-        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss)
+        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss).withLimit(Math.round(limit * 1000))
                 .withSecurity(TeamSimulation.Security.REAL).withFilm(GifRecorder.Settings.defaults());
         io.stdout().println("rescue of a wounded soldier (section IV-C), seed " + seed + ", loss " + loss
                 + ", signed traffic over the world's radio");

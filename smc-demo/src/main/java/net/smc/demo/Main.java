@@ -10,7 +10,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
- * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}),
+ * Start here: the {@code smc} command, with the subcommands {@code demo} ({@link DemoCommand}), {@code run} ({@link RunCommand}),
  * {@code shell} ({@link ShellCommand}), {@code validate} ({@link ValidateCommand}),
  * {@code keys} ({@link KeysCommand}), {@code node} ({@link NodeCommand}) and {@code status}
  * ({@link StatusCommand}). Only {@link #main} touches the process (its streams, its exit status, and

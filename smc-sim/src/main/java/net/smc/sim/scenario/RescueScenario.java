@@ -89,6 +89,10 @@ public final class RescueScenario {
             return new Settings(seed, p, limitMillis, security, film);
         }
 
+        public Settings withLimit(long millis) {
+            return new Settings(seed, loss, millis, security, film);
+        }
+
         public Settings withFilm(GifRecorder.Settings f) {
             return new Settings(seed, loss, limitMillis, security, f);
         }
