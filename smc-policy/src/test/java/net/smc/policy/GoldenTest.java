@@ -72,7 +72,7 @@ class GoldenTest {
             }
         }
         List<String> lines = new ArrayList<>();
-        Cell cell = Cell.builder()
+        PolicyEngine cell = PolicyEngine.builder()
                 .output(lines::add)
                 .errors(d -> lines.add(d.toString()))
                 .auth(auth)

@@ -11,7 +11,7 @@ import java.util.function.Consumer;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.comm.CommunicationManager;
 import net.smc.core.comm.SenderSettings;
-import net.smc.core.discovery.Discovery;
+import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.message.Identity;
 import net.smc.core.message.MessageType;
 import net.smc.core.mission.Mission;
@@ -56,7 +56,7 @@ public final class Cell {
     private final String vehicle;
     private final Mission mission;
     private final Slots slots;
-    private final net.smc.policy.Cell engine;
+    private final net.smc.policy.PolicyEngine engine;
     private final RoleManager roles;
     private final CommunicationManager comm;
     private final TeamProtocol protocol;
@@ -75,7 +75,7 @@ public final class Cell {
         Timing timing = b.timing != null ? b.timing : Timing.of(mission);
         SplittableRandom random = new SplittableRandom(b.seed);
         Consumer<String> output = b.output;
-        this.engine = net.smc.policy.Cell.builder()
+        this.engine = net.smc.policy.PolicyEngine.builder()
                 .clock(b.clock::nowMillis)
                 .random(random.split())
                 .repository(b.repository)
@@ -124,7 +124,7 @@ public final class Cell {
         this.protocol = new TeamProtocol(vehicle, slots, timing, comm, b.clock, b.scheduler, b.description, store,
                 b.repository, host, b.trace, random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
-        new Discovery((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
+        new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);
         for (MessageType t : TeamProtocol.handledTypes()) {
             router.register(protocol, t);
@@ -255,7 +255,7 @@ public final class Cell {
     }
 
     /** The policy engine, for tasks and tests that reach into it. */
-    public net.smc.policy.Cell engine() {
+    public net.smc.policy.PolicyEngine engine() {
         return engine;
     }
 

@@ -15,7 +15,7 @@ import java.util.function.UnaryOperator;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.mission.Mission;
-import net.smc.core.security.Identity;
+import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
 import net.smc.core.security.TrustAnchor;
@@ -161,7 +161,7 @@ public final class CellHost implements AutoCloseable {
         private UdpSettings udp = UdpSettings.defaults();
         private boolean commander;
         private Scheme scheme;
-        private Identity identity;
+        private SigningIdentity identity;
         private TrustAnchor trust;
         private long seed = System.nanoTime();
         private Consumer<CellEvent> trace = e -> { };
@@ -191,7 +191,7 @@ public final class CellHost implements AutoCloseable {
         }
 
         /** Authenticates with this key and credential, trusting {@code trust}; unauthenticated when not set. */
-        public Settings security(Identity identity, TrustAnchor trust) {
+        public Settings security(SigningIdentity identity, TrustAnchor trust) {
             this.identity = Objects.requireNonNull(identity, "identity");
             this.trust = Objects.requireNonNull(trust, "trust");
             return this;

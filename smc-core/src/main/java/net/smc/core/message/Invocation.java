@@ -10,7 +10,7 @@ public record Invocation(String role, String operation, List<Object> args) imple
     public Invocation {
         Fields.name("Invocation.role", role);
         Fields.name("Invocation.operation", operation);
-        args = Values.list("Invocation.args", args);
+        args = ValueLimits.list("Invocation.args", args);
     }
 
     @Override

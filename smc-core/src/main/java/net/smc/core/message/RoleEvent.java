@@ -11,7 +11,7 @@ public record RoleEvent(String role, String event, List<Object> values) implemen
     public RoleEvent {
         Fields.name("RoleEvent.role", role);
         Fields.name("RoleEvent.event", event);
-        values = Values.list("RoleEvent.values", values);
+        values = ValueLimits.list("RoleEvent.values", values);
     }
 
     @Override

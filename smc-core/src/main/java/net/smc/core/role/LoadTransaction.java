@@ -5,7 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import net.smc.core.task.Task;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.AuthorisationPolicy;
@@ -24,7 +24,7 @@ import net.smc.policy.runtime.Values;
  * tasks it started are stopped, and the domain tree is put back exactly as it was.
  */
 final class LoadTransaction {
-    private final Cell cell;
+    private final PolicyEngine cell;
     private final Domain root;
     private final Role role;
     private final LoadedRole existing;
@@ -39,7 +39,7 @@ final class LoadTransaction {
     private final List<TreeSnapshot.Addition> outside = new ArrayList<>();
     private boolean createdRoleDomain;
 
-    LoadTransaction(Cell cell, Role role, LoadedRole existing, Reassignment reassignment) {
+    LoadTransaction(PolicyEngine cell, Role role, LoadedRole existing, Reassignment reassignment) {
         this.cell = cell;
         this.root = cell.root();
         this.role = role;

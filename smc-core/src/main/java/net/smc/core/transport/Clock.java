@@ -6,7 +6,7 @@ package net.smc.core.transport;
  * every method that takes one says so in its name.
  *
  * <p>Milliseconds because the protocols' times (heartbeats, failure timeouts, radio latency) are
- * milliseconds to minutes, and because the policy engine's clock ({@code net.smc.policy.Cell}) is
+ * milliseconds to minutes, and because the policy engine's clock ({@code net.smc.policy.PolicyEngine}) is
  * milliseconds too: {@code Cell.builder().clock(clock::nowMillis)} hands a cell's clock to it.
  *
  * <p>The value never goes backwards. In simulation it is virtual time ({@code SimulationScheduler},

@@ -27,7 +27,7 @@ import net.smc.policy.lang.Unit;
  * The state of one self-managed cell's policy engine: the root domain, the registry of loadable
  * classes, event delivery, authorisation, and the injected output, error reporter, clock and
  * random source. Not thread-safe: a cell runs on one logical thread. Embedders use
- * {@link net.smc.policy.Cell}.
+ * {@link net.smc.policy.PolicyEngine}.
  */
 public final class CellRuntime {
     /** Configuration given by the embedding application. */
@@ -228,7 +228,7 @@ public final class CellRuntime {
      */
     public Object run(Unit unit, Variables variables) {
         Execution ex = newExecution();
-        Frame frame = new Frame(ex, variables == null ? Map.of() : variables.values);
+        VariableFrame frame = new VariableFrame(ex, variables == null ? Map.of() : variables.values);
         try {
             return interpreter.run(interpreter.compile(unit.statements()), frame);
         } catch (PonderError e) {
@@ -254,7 +254,7 @@ public final class CellRuntime {
             throw new PonderError("cannot run '" + source + "': " + unit.errors().size() + " syntax error"
                     + (unit.errors().size() == 1 ? "" : "s"));
         }
-        Frame frame = new Frame(ex, Map.of());
+        VariableFrame frame = new VariableFrame(ex, Map.of());
         return interpreter.run(interpreter.compile(unit.statements()), frame);
     }
 

@@ -24,7 +24,7 @@ public final class Interpreter {
 
     /** Executable code: one node of the compiled tree. */
     abstract static class Code {
-        abstract Object exec(Frame f);
+        abstract Object exec(VariableFrame f);
     }
 
     /** Compiled statements of a unit. */
@@ -108,7 +108,7 @@ public final class Interpreter {
     }
 
     /** Runs compiled statements in a frame; answers the last statement's value. */
-    Object run(Compiled unit, Frame frame) {
+    Object run(Compiled unit, VariableFrame frame) {
         Object value = Nil.NIL;
         for (Code statement : unit.statements) {
             value = statement.exec(frame);
@@ -147,7 +147,7 @@ public final class Interpreter {
         }
         ex.depth++;
         try {
-            Frame frame = new Frame(ex, code.free, block.captured, code.params, args);
+            VariableFrame frame = new VariableFrame(ex, code.free, block.captured, code.params, args);
             for (int i = 0; i < extraNames.length; i++) {
                 frame.set(extraNames[i], extraValues[i]);
             }
@@ -209,7 +209,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             return value;
         }
     }
@@ -233,7 +233,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             if (!absolute) {
                 Object v = f.lookup(first);
                 if (v != null) {
@@ -266,7 +266,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             Object v = value.exec(f);
             f.set(name, v);
             return v;
@@ -281,7 +281,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             PArray array = new PArray();
             for (Code element : elements) {
                 array.add(element.exec(f));
@@ -306,7 +306,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             return new Block(this, f.capture(free));
         }
     }
@@ -330,11 +330,11 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             return sendTo(f, receiver.exec(f));
         }
 
-        Object sendTo(Frame f, Object target) {
+        Object sendTo(VariableFrame f, Object target) {
             Object[] values = new Object[args.length];
             for (int i = 0; i < values.length; i++) {
                 values[i] = args[i].exec(f);
@@ -369,7 +369,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             Object target = receiver.exec(f);
             Object value = target;
             for (SendCode[] chain : chains) {

@@ -23,7 +23,7 @@ import net.smc.core.mission.Mission;
 import net.smc.core.security.Claims;
 import net.smc.core.security.Credential;
 import net.smc.core.security.IdealAuthentication;
-import net.smc.core.security.Identity;
+import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
 import net.smc.core.security.SigningKey;
@@ -68,7 +68,7 @@ public final class TeamSimulation {
         NONE
     }
 
-    private static final Map<String, Identity> IDENTITIES = new ConcurrentHashMap<>();
+    private static final Map<String, SigningIdentity> IDENTITIES = new ConcurrentHashMap<>();
     private static final SigningKey AUTHORITY = key(1);
     private static final SigningKey FOREIGN_AUTHORITY = key(2);
 
@@ -348,11 +348,11 @@ public final class TeamSimulation {
      * authority (a foreign one for a rogue). Made once per vehicle id and JVM: Ed25519 is slow and
      * they change no outcome.
      */
-    public static Identity identity(SimVehicle v, String missionName) {
+    public static SigningIdentity identity(SimVehicle v, String missionName) {
         return IDENTITIES.computeIfAbsent((v.rogue() ? "rogue:" : "") + v.id() + "@" + missionName, k -> {
             SigningKey key = key(k.hashCode() * 7919L + 3);
             SigningKey issuer = v.rogue() ? FOREIGN_AUTHORITY : AUTHORITY;
-            return new Identity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
+            return new SigningIdentity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
                     Long.MAX_VALUE / 2), issuer));
         });
     }

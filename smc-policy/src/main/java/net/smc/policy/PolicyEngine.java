@@ -32,7 +32,7 @@ import net.smc.policy.runtime.Values;
  * <pre>{@code
  * List<String> lines = new ArrayList<>();
  * List<Diagnostic> errors = new ArrayList<>();
- * Cell cell = Cell.builder().output(lines::add).errors(errors::add).build();
+ * PolicyEngine cell = PolicyEngine.builder().output(lines::add).errors(errors::add).build();
  * cell.run("boot.p2", """
  *     root/event at: "alarm" put: (root/factory/event create: #("level")).
  *     p := root/factory/ecapolicy create.
@@ -42,11 +42,11 @@ import net.smc.policy.runtime.Values;
  * cell.raise("root/event/alarm", 7);   // lines is now [7]
  * }</pre>
  */
-public final class Cell {
+public final class PolicyEngine {
     private final CellRuntime runtime;
     private Integer exitStatus;
 
-    private Cell(CellRuntime runtime) {
+    private PolicyEngine(CellRuntime runtime) {
         this.runtime = runtime;
     }
 
@@ -112,8 +112,8 @@ public final class Cell {
             return this;
         }
 
-        public Cell build() {
-            return new Cell(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
+        public PolicyEngine build() {
+            return new PolicyEngine(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
                     repository, Map.copyOf(classes))));
         }
     }
@@ -201,7 +201,7 @@ public final class Cell {
         private final CellRuntime.Variables variables = new CellRuntime.Variables();
 
         public RunResult run(String sourceName, String text) {
-            return Cell.this.run(sourceName, text, null, variables);
+            return PolicyEngine.this.run(sourceName, text, null, variables);
         }
 
         /** A variable's value, or {@code null} if it is not set. */

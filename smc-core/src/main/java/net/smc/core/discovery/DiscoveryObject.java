@@ -4,7 +4,7 @@ import java.util.LinkedHashSet;
 import java.util.Objects;
 import java.util.Set;
 import net.smc.core.capability.CapabilitySummary;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.Managed;
 import net.smc.policy.runtime.ManagedObject;
 import net.smc.policy.runtime.Op;
@@ -20,16 +20,16 @@ import org.slf4j.LoggerFactory;
  * whom to ask, and {@link DiscoveryActions} does the asking. Counts what it does.
  *
  * <pre>{@code
- * Discovery discovery = new Discovery(CredentialCheck.sharedToken("team-7"), protocols::requestFullCapability);
+ * DiscoveryObject discovery = new DiscoveryObject(CredentialCheck.sharedToken("team-7"), protocols::requestFullCapability);
  * discovery.install(cell);   // root/discovery
  * }</pre>
  */
 @Managed("Discovery")
-public final class Discovery {
+public final class DiscoveryObject {
     /** Where it sits under root. */
     public static final String NAME = "discovery";
 
-    private static final Logger LOG = LoggerFactory.getLogger(Discovery.class);
+    private static final Logger LOG = LoggerFactory.getLogger(DiscoveryObject.class);
     private static final String CHECK = "uav:has:cap:auth:";
 
     private final CredentialCheck credentials;
@@ -39,14 +39,14 @@ public final class Discovery {
     private long rejectedCredentials;
     private long requests;
 
-    public Discovery(CredentialCheck credentials, DiscoveryActions actions) {
+    public DiscoveryObject(CredentialCheck credentials, DiscoveryActions actions) {
         this.credentials = Objects.requireNonNull(credentials, "credentials");
         this.actions = Objects.requireNonNull(actions, "actions");
     }
 
     /** Puts this object at {@code root/discovery}; answers its handle. */
-    public ManagedObject install(Cell cell) {
-        ManagedObject handle = Cell.manage(this);
+    public ManagedObject install(PolicyEngine cell) {
+        ManagedObject handle = PolicyEngine.manage(this);
         cell.root().put(NAME, handle);
         return handle;
     }

@@ -1,26 +1,22 @@
 package net.smc.core.mission;
 
 import java.util.Set;
-import java.util.regex.Pattern;
+import net.smc.core.role.RoleNames;
 
-/** The rule for role names, shared by both files. */
-final class Names {
-    /** Letters, digits and {@code _}, from a letter: a role name is an element name and a policy URI segment. */
-    private static final Pattern ROLE = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
+/** The rule for role names in mission files ({@link RoleNames}'s, plus the reserved section names). */
+final class MissionNames {
     /** Names an instance file uses for its own sections, so no role may take them. */
     static final Set<String> RESERVED = Set.of("missionInstanceParameters", "missionClassParameters",
             "missionParameters", "constraints");
 
-    private Names() {
+    private MissionNames() {
     }
 
     /** Why {@code name} is not a role name, or {@code null} when it is one. */
     static String roleNameProblem(String name) {
-        if (name.isEmpty()) {
-            return "empty role name";
-        }
-        if (!ROLE.matcher(name).matches()) {
-            return "invalid role name '" + name + "'; a role name is letters, digits and _, starting with a letter";
+        String problem = RoleNames.roleNameProblem(name);
+        if (problem != null) {
+            return problem;
         }
         if (RESERVED.contains(name)) {
             return "role name '" + name + "' is reserved; a role may not take the name of a section";

@@ -8,10 +8,10 @@ import java.util.Arrays;
  * copies, and a subscriber may change registrations while it receives. Missing words read as 0,
  * so arrays are only as long as their highest bit needs.
  */
-final class Bits {
+final class CopyOnWriteBits {
     static final long[] EMPTY = new long[0];
 
-    private Bits() {
+    private CopyOnWriteBits() {
     }
 
     static long word(long[] bits, int w) {

@@ -15,7 +15,7 @@ import java.util.Collection;
  * limit is the writer's own mistake, so it is an {@link IllegalArgumentException} naming the field
  * and the limit.
  */
-final class WireWriter {
+final class CapabilityWireWriter {
     private final ByteArrayOutputStream out = new ByteArrayOutputStream(128);
     private final CharsetEncoder utf8 = StandardCharsets.UTF_8.newEncoder()
             .onMalformedInput(CodingErrorAction.REPORT)
@@ -23,7 +23,7 @@ final class WireWriter {
     private final CapabilityCodec.Limits limits;
     private final String what;
 
-    WireWriter(CapabilityCodec.Limits limits, String what) {
+    CapabilityWireWriter(CapabilityCodec.Limits limits, String what) {
         this.limits = limits;
         this.what = what;
     }

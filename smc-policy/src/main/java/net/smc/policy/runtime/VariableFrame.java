@@ -10,7 +10,7 @@ import java.util.Map;
  * assignments, which vanish with the call. A unit sees the variables a shell session kept plus its
  * own. Names are interned by the compiler, so lookups compare references.
  */
-final class Frame {
+final class VariableFrame {
     private static final int SMALL = 16;
     private static final String[] NONE = new String[0];
 
@@ -24,7 +24,7 @@ final class Frame {
     private HashMap<String, Object> many;
 
     /** A unit's frame; {@code outer} holds a session's kept variables (read-only here). */
-    Frame(Execution ex, Map<String, Object> outer) {
+    VariableFrame(Execution ex, Map<String, Object> outer) {
         this.ex = ex;
         this.capturedNames = NONE;
         this.capturedValues = null;
@@ -34,7 +34,7 @@ final class Frame {
     }
 
     /** A block call's frame; {@code params} is shared and never changed. */
-    Frame(Execution ex, String[] capturedNames, Object[] capturedValues, String[] params, Object[] args) {
+    VariableFrame(Execution ex, String[] capturedNames, Object[] capturedValues, String[] params, Object[] args) {
         this.ex = ex;
         this.capturedNames = capturedNames;
         this.capturedValues = capturedValues;

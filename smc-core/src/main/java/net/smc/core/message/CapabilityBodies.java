@@ -10,13 +10,13 @@ import net.smc.core.capability.CapabilitySummary;
  * form ({@link net.smc.core.capability.CapabilityCodec}), embedded as it is, with the message
  * layer's limits on names and counts. One encoding of a capability form serves everywhere.
  */
-final class CapabilityCodec {
+final class CapabilityBodies {
     /** The capability forms within this wire format's limits. */
     private static final net.smc.core.capability.CapabilityCodec FORMS = new net.smc.core.capability.CapabilityCodec(
             new net.smc.core.capability.CapabilityCodec.Limits(WireFormat.MAX_NAME, WireFormat.MAX_TASKS,
                     WireFormat.MAX_PAYLOAD - 1_024));
 
-    private CapabilityCodec() {
+    private CapabilityBodies() {
     }
 
     static void writeSummary(CapabilitySummary s, WireWriter w) {

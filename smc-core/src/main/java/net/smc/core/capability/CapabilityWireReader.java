@@ -16,7 +16,7 @@ import java.util.TreeSet;
  * may hold anything. Every length and count is checked against the limits and against the bytes
  * left before anything is allocated, so hostile input costs at most what it weighs.
  */
-final class WireReader {
+final class CapabilityWireReader {
     private final ByteBuffer in;
     private final int start;
     private final CapabilityCodec.Limits limits;
@@ -25,7 +25,7 @@ final class WireReader {
             .onMalformedInput(CodingErrorAction.REPORT)
             .onUnmappableCharacter(CodingErrorAction.REPORT);
 
-    WireReader(ByteBuffer in, CapabilityCodec.Limits limits, String what) {
+    CapabilityWireReader(ByteBuffer in, CapabilityCodec.Limits limits, String what) {
         this.in = in;
         this.start = in.position();
         this.limits = limits;

@@ -11,11 +11,11 @@ import java.nio.charset.StandardCharsets;
  * well-formed UTF-8, length-prefixed by one byte. Short, so that a credential stays a fraction of
  * a datagram; bounded, so that a reader never allocates what a sender claims.
  */
-final class Names {
+final class WireNames {
     /** The most UTF-8 bytes a vehicle id or a mission name may have. */
     static final int MAX_BYTES = 64;
 
-    private Names() {
+    private WireNames() {
     }
 
     /**

@@ -14,8 +14,8 @@ import net.smc.core.capability.TaskDescription;
  * 64 resources and 64 tasks, 64 operations and 64 events per task, 16 arguments per operation and
  * 16 attributes per event.
  */
-final class Capabilities {
-    private Capabilities() {
+final class CapabilityLimits {
+    private CapabilityLimits() {
     }
 
     static CapabilitySummary summary(String field, CapabilitySummary s) {

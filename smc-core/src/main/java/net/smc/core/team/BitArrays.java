@@ -1,8 +1,8 @@
 package net.smc.core.team;
 
 /** The few operations the planner needs on bitsets kept as {@code long[]}. */
-final class Bits {
-    private Bits() {
+final class BitArrays {
+    private BitArrays() {
     }
 
     static boolean get(long[] bits, int i) {

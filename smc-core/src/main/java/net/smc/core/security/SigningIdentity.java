@@ -8,10 +8,10 @@ import java.util.Objects;
  * @param key        the vehicle's Ed25519 key pair
  * @param credential its credential; it must be for {@code key}'s public half
  */
-public record Identity(SigningKey key, Credential credential) {
+public record SigningIdentity(SigningKey key, Credential credential) {
 
     /** @throws IllegalArgumentException when the credential vouches for another key */
-    public Identity {
+    public SigningIdentity {
         Objects.requireNonNull(key, "key");
         Objects.requireNonNull(credential, "credential");
         if (!credential.vehicleKey().equals(key.verificationKey())) {

@@ -12,8 +12,8 @@ import java.util.List;
  * holds only values the codec can write, in lists nobody else can change. Lists allow nil
  * elements, so they are copied into unmodifiable {@code ArrayList}s rather than {@code List.copyOf}.
  */
-final class Values {
-    private Values() {
+final class ValueLimits {
+    private ValueLimits() {
     }
 
     /** An immutable deep copy of a list of values. */

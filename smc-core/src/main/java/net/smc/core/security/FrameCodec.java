@@ -23,7 +23,7 @@ import java.nio.ByteBuffer;
  * <p>ts is the sender's clock in epoch ms, ctr its counter. A signed kind names its sender through
  * its credential; the keyed kinds name it directly, and the key proves it.
  */
-final class Envelope {
+final class FrameCodec {
     static final int VERSION = 1;
     static final int SIGNED = 1;
     static final int HELLO = 2;
@@ -37,7 +37,7 @@ final class Envelope {
     static final int MAC = TruncatedMac.BYTES;
     private static final int HEAD = 2 + 8 + 8;   // version, kind, timestamp, counter
 
-    private Envelope() {
+    private FrameCodec() {
     }
 
     static int signedOverhead(int credentialBytes) {

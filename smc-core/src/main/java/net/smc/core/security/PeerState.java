@@ -6,7 +6,7 @@ package net.smc.core.security;
  * the handshake state: this side's ephemeral key for the pair, the peer's as last seen, and the
  * session derived from the two.
  */
-final class Peer {
+final class PeerState {
     static final long NEVER = Long.MIN_VALUE;
 
     Credential credential;
@@ -21,7 +21,7 @@ final class Peer {
     long helloSentMillis = NEVER;
     Session session;
 
-    Peer(int replayWindow) {
+    PeerState(int replayWindow) {
         this.signedWindow = new ReplayWindow(replayWindow);
     }
 
