@@ -10,7 +10,7 @@ import java.util.function.Supplier;
 import java.util.regex.Pattern;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.TaskDescription;
-import net.smc.core.cell.CellHost;
+import net.smc.core.host.CellHost;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.udp.UdpSettings;
 import net.smc.policy.PolicyRepository;

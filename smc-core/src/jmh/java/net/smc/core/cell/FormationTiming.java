@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import net.smc.core.host.CellHost;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.DatagramSocket;

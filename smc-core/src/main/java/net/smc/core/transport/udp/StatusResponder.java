@@ -1,5 +1,11 @@
-package net.smc.core.transport;
+package net.smc.core.transport.udp;
 
+import net.smc.core.transport.Transport;
+import net.smc.core.transport.udp.StatusClient;
+import net.smc.core.transport.Receiver;
+import net.smc.core.transport.ForwardingTransport;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Address;
 import static java.nio.charset.StandardCharsets.US_ASCII;
 import static java.nio.charset.StandardCharsets.UTF_8;
 

@@ -1,5 +1,9 @@
-package net.smc.core.cell;
+package net.smc.core.host;
 
+import net.smc.core.cell.Scheme;
+import net.smc.core.cell.CellView;
+import net.smc.core.cell.CellEvent;
+import net.smc.core.cell.Cell;
 import java.io.IOException;
 import java.util.Objects;
 import java.util.concurrent.Callable;
@@ -19,7 +23,7 @@ import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
 import net.smc.core.security.TrustAnchor;
-import net.smc.core.transport.StatusResponder;
+import net.smc.core.transport.udp.StatusResponder;
 import net.smc.core.transport.Transport;
 import net.smc.core.transport.real.RealTimeScheduler;
 import net.smc.core.transport.real.SystemClock;

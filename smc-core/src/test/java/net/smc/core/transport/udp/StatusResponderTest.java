@@ -1,5 +1,7 @@
-package net.smc.core.transport;
+package net.smc.core.transport.udp;
 
+import net.smc.core.transport.Transport;
+import net.smc.core.transport.Address;
 import static java.nio.charset.StandardCharsets.US_ASCII;
 import static java.nio.charset.StandardCharsets.UTF_8;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;

@@ -1,5 +1,10 @@
-package net.smc.core.capability;
+package net.smc.core.task;
 
+import net.smc.core.capability.TaskDescription;
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.capability.CapabilityRequirement;
+import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.capability.CapabilityCodec;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;

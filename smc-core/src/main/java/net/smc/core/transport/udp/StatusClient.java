@@ -1,5 +1,7 @@
-package net.smc.core.transport;
+package net.smc.core.transport.udp;
 
+import net.smc.core.transport.Address;
+import net.smc.core.transport.udp.StatusResponder;
 import java.io.IOException;
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
