@@ -38,7 +38,6 @@ class ArchitectureTest {
             inside("discovery/DiscoveryObject"),
             inside("role/ExternalGateway"),
             inside("role/LoadTransaction"),
-            inside("role/Peer"),
             inside("role/Policies"),
             inside("role/PolicyFactoryTap"),
             inside("role/RoleManager"),

@@ -19,7 +19,7 @@ import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 import net.smc.policy.runtime.Values;
 
 /**
@@ -308,7 +308,7 @@ public final class PolicyEngine {
         return runtime;
     }
 
-    /** Wraps a Java object with {@link net.smc.policy.runtime.Op} annotations as a managed object. */
+    /** Wraps a Java object with {@link net.smc.policy.api.Op} annotations as a managed object. */
     public static ManagedObject manage(Object javaObject) {
         return ManagedObject.wrap(javaObject);
     }

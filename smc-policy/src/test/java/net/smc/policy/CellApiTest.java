@@ -7,7 +7,7 @@ import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
 import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 import org.junit.jupiter.api.Test;
 
 /** The parts of the embedding API that the golden scripts cannot reach. */

@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import org.junit.jupiter.api.Test;
 
 /** The embedding examples of the README and of {@link PolicyEngine}'s javadoc, run as written there. */

@@ -7,7 +7,7 @@ import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 
 /**
  * Where invocations from other vehicles enter a role's external interface (the paper's section

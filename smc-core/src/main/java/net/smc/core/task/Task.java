@@ -4,7 +4,7 @@ import java.util.Objects;
 import net.smc.core.capability.TaskDescription;
 import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;

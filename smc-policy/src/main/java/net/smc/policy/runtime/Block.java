@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import java.util.List;
 import net.smc.policy.lang.SourcePos;
 

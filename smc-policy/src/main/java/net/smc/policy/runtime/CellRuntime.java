@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Managed;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;

@@ -1,4 +1,4 @@
-package net.smc.policy.runtime;
+package net.smc.policy.api;
 
 import java.lang.annotation.ElementType;
 import java.lang.annotation.Retention;
@@ -10,7 +10,7 @@ import java.lang.annotation.Target;
  * ({@code size}), binary ({@code +}, one argument) or keyword ({@code at:put:}, one argument per
  * colon). Instance methods (also those declared on implemented interfaces; the class wins) become
  * the object's operations; constructors and static methods become
- * its factory's. A leading parameter of type {@link CallContext} is hidden from PonderTalk and
+ * its factory's. A leading parameter of type {@code net.smc.policy.runtime.CallContext} is hidden from PonderTalk and
  * receives the call's context. Arity is checked when the class is first used.
  *
  * <pre>{@code

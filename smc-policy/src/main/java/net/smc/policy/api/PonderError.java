@@ -1,4 +1,4 @@
-package net.smc.policy.runtime;
+package net.smc.policy.api;
 
 import net.smc.policy.lang.SourcePos;
 

@@ -1,4 +1,4 @@
-package net.smc.policy.runtime;
+package net.smc.policy.api;
 
 import java.lang.annotation.ElementType;
 import java.lang.annotation.Retention;
