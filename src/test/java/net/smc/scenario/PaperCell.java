@@ -13,10 +13,10 @@ import net.smc.core.discovery.CredentialCheck;
 import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
-import net.smc.policy.AuthMode;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**

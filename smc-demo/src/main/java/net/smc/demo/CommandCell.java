@@ -4,9 +4,9 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.OptionalInt;
 import java.util.Random;
-import net.smc.policy.AuthMode;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**

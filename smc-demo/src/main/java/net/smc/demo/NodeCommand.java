@@ -13,7 +13,7 @@ import net.smc.core.capability.TaskDescription;
 import net.smc.core.host.CellHost;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.udp.UdpSettings;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;

@@ -17,7 +17,7 @@ import net.smc.core.security.KeyFiles;
 import net.smc.core.security.SigningKey;
 import net.smc.core.security.TrustAnchor;
 import net.smc.core.security.VerificationKey;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * The files {@code smc node} starts from, read and checked against each other: the vehicle's key and

@@ -1,5 +1,9 @@
 package net.smc.policy;
 
+import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.Limits;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.AuthMode;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -1,5 +1,7 @@
 package net.smc.policy;
 
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.AuthMode;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 

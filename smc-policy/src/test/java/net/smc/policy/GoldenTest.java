@@ -1,5 +1,8 @@
 package net.smc.policy;
 
+import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.Limits;
+import net.smc.policy.api.AuthMode;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,5 +1,6 @@
 package net.smc.policy;
 
+import net.smc.policy.api.PolicyRepository;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;

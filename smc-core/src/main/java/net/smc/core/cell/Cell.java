@@ -25,8 +25,8 @@ import net.smc.core.security.Credential;
 import net.smc.core.transport.Clock;
 import net.smc.core.transport.Scheduler;
 import net.smc.core.transport.Transport;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**

@@ -90,7 +90,7 @@ final class TeamProtocol implements Subscriber {
     private final Scheduler scheduler;
     private final CapabilityDescription description;
     private final PolicyStore store;
-    private final net.smc.policy.PolicyRepository repository;
+    private final net.smc.policy.api.PolicyRepository repository;
     private final Host host;
     private final Consumer<CellEvent> trace;
     private final long tickPhaseMillis;
@@ -201,7 +201,7 @@ final class TeamProtocol implements Subscriber {
     }
 
     TeamProtocol(String self, Slots slots, Timing timing, CommunicationManager comm, Clock clock, Scheduler scheduler,
-                 CapabilityDescription description, PolicyStore store, net.smc.policy.PolicyRepository repository,
+                 CapabilityDescription description, PolicyStore store, net.smc.policy.api.PolicyRepository repository,
                  Host host, Consumer<CellEvent> trace, long tickPhaseMillis) {
         this.self = self;
         this.slots = slots;

@@ -30,7 +30,7 @@ import net.smc.core.transport.real.SystemClock;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;
 import net.smc.core.transport.udp.UdpTransport;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * A {@link Cell} deployed on a real network: Netty UDP underneath, status queries answered

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Map;
 import net.smc.core.task.Task;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.AuthorisationPolicy;
 import net.smc.policy.runtime.Domain;

@@ -2,7 +2,7 @@ package net.smc.core.role;
 
 import java.util.Objects;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**

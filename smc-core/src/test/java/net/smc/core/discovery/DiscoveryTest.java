@@ -11,7 +11,7 @@ import java.util.Set;
 import java.util.TreeSet;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import org.junit.jupiter.api.Test;
 

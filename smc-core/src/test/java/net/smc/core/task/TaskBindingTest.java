@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;

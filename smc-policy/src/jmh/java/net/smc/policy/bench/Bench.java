@@ -2,9 +2,9 @@ package net.smc.policy.bench;
 
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.AuthMode;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 
 /** Small helpers shared by the benchmarks: cells that collect their errors, checks, generated texts. */

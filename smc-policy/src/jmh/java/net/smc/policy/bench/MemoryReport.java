@@ -8,9 +8,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import javax.management.ObjectName;
-import net.smc.policy.AuthMode;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.runtime.Domain;
 
 /**

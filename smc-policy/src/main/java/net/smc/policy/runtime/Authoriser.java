@@ -5,8 +5,8 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.lang.SourcePos;
 
 /**

@@ -5,7 +5,7 @@ import net.smc.policy.api.Managed;
 import net.smc.policy.api.Op;
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.lang.SourcePos;
 
 /**

@@ -14,7 +14,7 @@ import java.util.Random;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.lang.Lexer;
 import net.smc.policy.lang.Parser;

@@ -33,7 +33,7 @@ import net.smc.core.transport.Transport;
 import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * A whole team of cells on the in-memory network and one virtual clock: the deterministic

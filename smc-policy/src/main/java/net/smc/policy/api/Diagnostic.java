@@ -1,4 +1,4 @@
-package net.smc.policy;
+package net.smc.policy.api;
 
 import net.smc.policy.lang.SourcePos;
 

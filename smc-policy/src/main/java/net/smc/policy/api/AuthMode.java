@@ -1,4 +1,4 @@
-package net.smc.policy;
+package net.smc.policy.api;
 
 /** Whether a cell checks authorisation policies, and its default decision when none matches. */
 public enum AuthMode {

@@ -1,4 +1,4 @@
-package net.smc.policy;
+package net.smc.policy.api;
 
 /**
  * Bounds on what one run may do, so that no input can hang or crash a cell.

@@ -1,4 +1,4 @@
-package net.smc.policy;
+package net.smc.policy.api;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
