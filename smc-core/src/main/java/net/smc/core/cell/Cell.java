@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.SplittableRandom;
+import java.util.TreeSet;
 import java.util.function.Consumer;
 
 import net.smc.core.capability.CapabilityDescription;
@@ -13,12 +14,12 @@ import net.smc.core.comm.CommunicationManager;
 import net.smc.core.comm.SenderSettings;
 import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.message.Identity;
-import net.smc.core.message.MessageType;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.role.PolicySource;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
+import net.smc.core.role.TaskProvider;
 import net.smc.core.router.MessageRouter;
 import net.smc.core.security.AuthenticatingTransport;
 import net.smc.core.security.Credential;
@@ -63,12 +64,14 @@ public final class Cell {
     private final PolicyStore store = new PolicyStore();
     private final List<Diagnostic> diagnostics = new ArrayList<>();
     private final boolean commanding;
+    private final TaskProvider tasks;
     private boolean started;
 
     private Cell(Builder b) {
         this.vehicle = b.vehicle;
         this.mission = b.mission;
         this.commanding = b.commander;
+        this.tasks = b.tasks;
         Scheme scheme = b.scheme != null ? b.scheme
                 : mission.parameter("scheme").map(p -> Scheme.parse(String.valueOf(p.value()))).orElse(Scheme.DISTRIBUTED);
         this.slots = new Slots(mission, scheme);
@@ -114,21 +117,17 @@ public final class Cell {
             }
 
             @Override
-            public Object credentialOf(String peer) {
-                if (auth == null) {
-                    return "unauthenticated";
-                }
-                return auth.credentialOf(peer).map(c -> (Object) c).orElse("none");
+            public Optional<Credential> credentialOf(String peer) {
+                return auth == null ? Optional.empty() : auth.credentialOf(peer);
             }
         };
-        this.protocol = new TeamProtocol(vehicle, slots, timing, comm, b.clock, b.scheduler, b.description, store,
-                b.repository, host, b.trace, random.nextLong(timing.comTimeoutMillis()));
+        this.protocol = new TeamProtocol(TeamContext.builder().self(vehicle).slots(slots).timing(timing).comm(comm)
+                .clock(b.clock).scheduler(b.scheduler).description(b.description).store(store)
+                .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
         new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);
-        for (MessageType t : TeamProtocol.handledTypes()) {
-            router.register(protocol, t);
-        }
+        protocol.register(router);
         if (commanding) {
             loadRepository(b.repository);
         }
@@ -267,7 +266,7 @@ public final class Cell {
         return comm;
     }
 
-    /** The role a vehicle loads for {@code name}: the mission's policies as this cell holds them. */
+    /** The role a vehicle loads for {@code name}: the mission's policies as this cell holds them, and its tasks. */
     private Role roleOf(String name, PolicyStore from) {
         MissionRole r = slots.role(name);
         Role.Builder b = Role.builder(name);
@@ -278,6 +277,12 @@ public final class Cell {
             b.authorisation(PolicySource.text(uri, text(from, uri, name)));
         }
         slots.managedRoles(name).forEach(b::manages);
+        if (tasks != TaskProvider.NONE) {
+            for (String task : new TreeSet<>(r.requirement().tasks())) {
+                b.task(task, () -> tasks.task(task).orElseThrow(() -> new IllegalStateException("vehicle '" + vehicle
+                        + "' has no task '" + task + "' (its tasks: " + new TreeSet<>(tasks.names()) + ")")));
+            }
+        }
         return b.build();
     }
 
@@ -322,6 +327,7 @@ public final class Cell {
         private Consumer<CellEvent> trace = e -> { };
         private Consumer<String> output = line -> { };
         private SenderSettings senderSettings;
+        private TaskProvider tasks = TaskProvider.NONE;
 
         private Builder(String vehicle, Mission mission, CapabilityDescription description) {
             this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
@@ -393,6 +399,16 @@ public final class Cell {
         /** Overrides the retransmission settings the timing gives ({@link Timing#senderSettings()}). */
         public Builder senderSettings(SenderSettings settings) {
             this.senderSettings = Objects.requireNonNull(settings, "settings");
+            return this;
+        }
+
+        /**
+         * The vehicle's tasks: a role it is assigned starts those its mission requires (bound at
+         * {@code root/task/<name>}), and withdrawing the role stops them. Default
+         * {@link TaskProvider#NONE}: roles load without tasks.
+         */
+        public Builder tasks(TaskProvider tasks) {
+            this.tasks = Objects.requireNonNull(tasks, "tasks");
             return this;
         }
 

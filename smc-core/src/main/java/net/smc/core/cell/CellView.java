@@ -1,5 +1,11 @@
 package net.smc.core.cell;
 
+import com.fasterxml.jackson.annotation.JsonProperty;
+import com.fasterxml.jackson.annotation.JsonPropertyOrder;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
 import java.util.List;
 import java.util.Map;
 
@@ -19,84 +25,47 @@ import java.util.Map;
  * @param state      for the acting commander, the mission's state; otherwise null
  * @param counts     for the acting commander, holders per role in its team; otherwise empty
  * @param timeMillis the cell's clock when the view was taken
+ *
+ * <p>As JSON ({@link #toJson}, {@link #fromJson}) it is one object with these fields in this order,
+ * except that {@code state} is named {@code missionState} and {@code timeMillis} is {@code time};
+ * absent values are {@code null}.
  */
+@JsonPropertyOrder({"vehicle", "mission", "identity", "epoch", "commander", "acting", "parent", "suspended",
+        "roles", "children", "missionState", "counts", "time"})
 public record CellView(String vehicle, String mission, String identity, long epoch, String commander, boolean acting,
                        String parent, boolean suspended, List<String> roles, Map<String, List<String>> children,
-                       MissionState state, Map<String, Integer> counts, long timeMillis) {
+                       @JsonProperty("missionState") MissionState state, Map<String, Integer> counts,
+                       @JsonProperty("time") long timeMillis) {
+
+    private static final ObjectMapper JSON = JsonMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
+            .enable(DeserializationFeature.FAIL_ON_MISSING_CREATOR_PROPERTIES)
+            .build();
 
     /** The view as one JSON object. */
     public String toJson() {
-        StringBuilder b = new StringBuilder(256).append('{');
-        field(b, "vehicle", vehicle).append(',');
-        field(b, "mission", mission).append(',');
-        field(b, "identity", identity).append(',');
-        b.append("\"epoch\":").append(epoch).append(',');
-        field(b, "commander", commander).append(',');
-        b.append("\"acting\":").append(acting).append(',');
-        field(b, "parent", parent).append(',');
-        b.append("\"suspended\":").append(suspended).append(',');
-        b.append("\"roles\":");
-        list(b, roles).append(',');
-        b.append("\"children\":{");
-        boolean first = true;
-        for (Map.Entry<String, List<String>> e : children.entrySet()) {
-            if (!first) {
-                b.append(',');
-            }
-            first = false;
-            string(b, e.getKey()).append(':');
-            list(b, e.getValue());
+        try {
+            return JSON.writeValueAsString(this);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("cannot write the view of " + vehicle + " as JSON: " + e.getMessage(), e);
         }
-        b.append("},");
-        field(b, "missionState", state == null ? null : state.name()).append(',');
-        b.append("\"counts\":{");
-        first = true;
-        for (Map.Entry<String, Integer> e : counts.entrySet()) {
-            if (!first) {
-                b.append(',');
-            }
-            first = false;
-            string(b, e.getKey()).append(':').append(e.getValue());
-        }
-        b.append("},\"time\":").append(timeMillis).append('}');
-        return b.toString();
     }
 
-    private static StringBuilder field(StringBuilder b, String name, String value) {
-        string(b, name).append(':');
-        return value == null ? b.append("null") : string(b, value);
-    }
-
-    private static StringBuilder list(StringBuilder b, List<String> values) {
-        b.append('[');
-        for (int i = 0; i < values.size(); i++) {
-            if (i > 0) {
-                b.append(',');
+    /**
+     * Reads a view written by {@link #toJson} (for example a node's answer to {@code smc status}).
+     *
+     * @throws IllegalArgumentException when {@code json} is not such an object, naming the problem
+     */
+    public static CellView fromJson(String json) {
+        try {
+            CellView view = JSON.readValue(json, CellView.class);
+            if (view.vehicle == null || view.roles == null || view.children == null || view.counts == null) {
+                throw new IllegalArgumentException("not a status view (vehicle, roles, children and counts are "
+                        + "required): " + json);
             }
-            string(b, values.get(i));
+            return view;
+        } catch (JsonProcessingException e) {
+            throw new IllegalArgumentException("not a status view: " + e.getOriginalMessage(), e);
         }
-        return b.append(']');
-    }
-
-    static StringBuilder string(StringBuilder b, String s) {
-        b.append('"');
-        for (int i = 0; i < s.length(); i++) {
-            char c = s.charAt(i);
-            switch (c) {
-                case '"' -> b.append("\\\"");
-                case '\\' -> b.append("\\\\");
-                case '\n' -> b.append("\\n");
-                case '\r' -> b.append("\\r");
-                case '\t' -> b.append("\\t");
-                default -> {
-                    if (c < 0x20) {
-                        b.append(String.format("\\u%04x", (int) c));
-                    } else {
-                        b.append(c);
-                    }
-                }
-            }
-        }
-        return b.append('"');
     }
 }

@@ -20,7 +20,7 @@ import net.smc.policy.api.PolicyRepository;
 /**
  * Start here: loads a mission instance file, the mission class file it names, checks both and
  * resolves every policy URI in a policy repository, giving an immutable {@link Mission}. This is
- * step 1 of the data flow in DESIGN.md: the acting commander loads what the command base sent.
+ * the first step of a mission: the acting commander loads what the command base sent.
  *
  * <pre>{@code
  * MissionLoader loader = new MissionLoader(new PolicyRepository(Path.of("policies")));

@@ -4,7 +4,7 @@
  * thread) and a {@link net.smc.core.transport.Transport} (send bytes to an
  * {@link net.smc.core.transport.Address} or broadcast them; a {@link net.smc.core.transport.Receiver}
  * takes what arrives). Protocol code is written against these interfaces only; it never reads a
- * wall clock, sleeps, starts a thread or opens a socket (DESIGN.md, "The cell is sans-IO").
+ * wall clock, sleeps, starts a thread or opens a socket (the cell is sans-IO: {@code doc-files/transport.md}).
  *
  * <p>Implementations: {@code transport.sim} (a virtual clock, a deterministic scheduler and an
  * in-memory network with fault injection, all driven by one thread), {@code transport.real} (the

@@ -12,7 +12,7 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 
-/** DESIGN.md: Netty is used only inside the UDP transport package, so the rest of the project never depends on it. */
+/** Netty is used only inside the UDP transport package, so the rest of the project never depends on it. */
 class NettyConfinementTest {
 
     @Test

@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Turns PonderTalk source text into tokens (PONDERTALK.md section 2). Lexical errors are added to
+ * Turns PonderTalk source text into tokens (smc-policy/PONDERTALK.md section 2). Lexical errors are added to
  * the given list and the lexer carries on, so one pass reports every error of a unit.
  */
 public final class Lexer {

@@ -6,7 +6,7 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Parses a PonderTalk unit into {@link Node}s (grammar: PONDERTALK.md section 3). The parser
+ * Parses a PonderTalk unit into {@link Node}s (grammar: smc-policy/PONDERTALK.md section 3). The parser
  * recovers at statement boundaries, so one call reports every syntax error of the unit; it bounds
  * nesting so that no input can exhaust the stack.
  */

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import net.smc.policy.api.PonderError;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -11,7 +12,7 @@ import net.smc.policy.lang.SourcePos;
 
 /**
  * Decides whether a send from a subject to a target is authorised, at the four enforcement
- * points, by Ponder2's domain-nesting precedence (PONDERTALK.md section 9). For each (subject,
+ * points, by Ponder2's domain-nesting precedence (smc-policy/PONDERTALK.md section 9). For each (subject,
  * target, selector) it builds once, and caches, the ordered list of candidate policies of every
  * path combination; a send then only evaluates conditions in order. The cache is dropped whenever
  * a policy or a domain membership changes.

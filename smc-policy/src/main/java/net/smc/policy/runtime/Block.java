@@ -1,25 +1,30 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import net.smc.policy.api.Managed;
 import net.smc.policy.api.Op;
 import java.util.List;
+import java.util.Map;
 import net.smc.policy.lang.SourcePos;
 
 /**
  * A block: code with the values, frozen when it was created, of the variables its code reads
- * (PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
+ * (smc-policy/PONDERTALK.md section 4). A block made by {@code onError:} runs another block and, on error,
  * its handler.
  */
 @Managed("Block")
 public final class Block {
     final Interpreter.BlockCode code;
     final Object[] captured;
+    /** Every variable seen where the block was made, when its code reads {@code Variables}; else empty. */
+    final Map<String, Object> scope;
     final Block guarded;
     final Block handler;
 
-    Block(Interpreter.BlockCode code, Object[] captured) {
+    Block(Interpreter.BlockCode code, Object[] captured, Map<String, Object> scope) {
         this.code = code;
         this.captured = captured;
+        this.scope = scope;
         this.guarded = null;
         this.handler = null;
     }
@@ -27,6 +32,7 @@ public final class Block {
     private Block(Block guarded, Block handler) {
         this.code = guarded.code;
         this.captured = guarded.captured;
+        this.scope = guarded.scope;
         this.guarded = guarded;
         this.handler = handler;
     }

@@ -214,7 +214,7 @@ public final class CellRuntime {
 
     /** The variables of a shell session, kept across its inputs. */
     public static final class Variables {
-        private Map<String, Object> values = new HashMap<>();
+        private Map<String, Object> values = new LinkedHashMap<>();
 
         /** A variable's value, or {@code null}. */
         public Object get(String name) {
@@ -242,9 +242,7 @@ public final class CellRuntime {
             return null;
         } finally {
             if (variables != null) {
-                Map<String, Object> kept = new HashMap<>(variables.values);
-                kept.putAll(frame.locals());
-                variables.values = kept;
+                variables.values = frame.kept();
             }
         }
     }

@@ -1,9 +1,10 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import net.smc.policy.api.PonderError;
-import net.smc.policy.api.Op;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import net.smc.policy.lang.Node;
 import net.smc.policy.lang.SourcePos;
@@ -149,7 +150,7 @@ public final class Interpreter {
         }
         ex.depth++;
         try {
-            VariableFrame frame = new VariableFrame(ex, code.free, block.captured, code.params, args);
+            VariableFrame frame = new VariableFrame(ex, code.free, block.captured, code.params, args, block.scope);
             for (int i = 0; i < extraNames.length; i++) {
                 frame.set(extraNames[i], extraValues[i]);
             }
@@ -238,6 +239,9 @@ public final class Interpreter {
         Object exec(VariableFrame f) {
             if (!absolute) {
                 Object v = f.lookup(first);
+                if (v == null && first == VariableFrame.VARIABLES) {
+                    v = f.variables();
+                }
                 if (v != null) {
                     return rest.length == 0 ? v : walk(v, rest);
                 }
@@ -299,17 +303,20 @@ public final class Interpreter {
         final String[] free;
         final Code[] body;
         final SourcePos pos;
+        /** Whether the code reads {@code Variables}, so a block must capture every visible variable. */
+        private final boolean readsVariables;
 
         BlockCode(String[] params, String[] free, Code[] body, SourcePos pos) {
             this.params = params;
             this.free = free;
+            this.readsVariables = List.of(free).contains(VariableFrame.VARIABLES);
             this.body = body;
             this.pos = pos;
         }
 
         @Override
         Object exec(VariableFrame f) {
-            return new Block(this, f.capture(free));
+            return new Block(this, f.capture(free), readsVariables ? f.snapshot() : Map.of());
         }
     }
 

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.api.Managed;
 import net.smc.policy.api.Op;
@@ -35,6 +36,11 @@ public final class PHash {
 
     public boolean containsKey(String key) {
         return map.containsKey(key);
+    }
+
+    /** A read-only view of the entries by key, in insertion order. */
+    Map<String, Object> asMap() {
+        return java.util.Collections.unmodifiableMap(map);
     }
 
     /** A read-only view of the entries, in insertion order. */

@@ -1,39 +1,73 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import java.math.BigDecimal;
+import java.util.Collections;
+import java.util.IdentityHashMap;
 import java.util.Map;
+import java.util.Set;
 
-/** Printing, equality and class names of PonderTalk values: one place for the rules of PONDERTALK.md section 5. */
+/** Printing, equality and class names of PonderTalk values: one place for the rules of smc-policy/PONDERTALK.md section 5. */
 public final class Values {
     private Values() {
     }
 
-    /** The printed form of a value, as {@code root print:} shows it. */
+    /**
+     * The printed form of a value, as {@code root print:} shows it. An array or hash inside itself
+     * (a unit's {@code Variables} held in one of its variables, say) prints there as {@code ...}.
+     */
     public static String print(Object value) {
+        if (value instanceof PArray || value instanceof PHash) {
+            StringBuilder out = new StringBuilder();
+            printContainer(value, out, Collections.newSetFromMap(new IdentityHashMap<>()));
+            return out.toString();
+        }
+        return printScalar(value);
+    }
+
+    private static String printScalar(Object value) {
         if (value instanceof String s) {
             return s;
         }
         if (value instanceof BigDecimal n) {
             return n.toString();
         }
+        return String.valueOf(value);
+    }
+
+    private static void printInto(Object value, StringBuilder out, Set<Object> open) {
+        if (value instanceof PArray || value instanceof PHash) {
+            if (open.contains(value)) {
+                out.append("...");
+            } else {
+                printContainer(value, out, open);
+            }
+        } else {
+            out.append(printScalar(value));
+        }
+    }
+
+    private static void printContainer(Object value, StringBuilder out, Set<Object> open) {
+        open.add(value);
         if (value instanceof PArray a) {
-            StringBuilder out = new StringBuilder("[");
+            out.append('[');
             for (int i = 0; i < a.size(); i++) {
                 if (i > 0) {
                     out.append(", ");
                 }
-                out.append(print(a.get(i)));
+                printInto(a.get(i), out, open);
             }
-            return out.append(']').toString();
-        }
-        if (value instanceof PHash h) {
-            StringBuilder out = new StringBuilder("{ ");
-            for (Map.Entry<String, Object> e : h.entries()) {
-                out.append(e.getKey()).append("=\"").append(print(e.getValue())).append("\" ");
+            out.append(']');
+        } else {
+            out.append("{ ");
+            for (Map.Entry<String, Object> e : ((PHash) value).entries()) {
+                out.append(e.getKey()).append("=\"");
+                printInto(e.getValue(), out, open);
+                out.append("\" ");
             }
-            return out.append('}').toString();
+            out.append('}');
         }
-        return String.valueOf(value);
+        open.remove(value);
     }
 
     /** PonderTalk's class name of a value. */

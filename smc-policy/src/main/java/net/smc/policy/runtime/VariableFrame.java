@@ -1,7 +1,7 @@
 package net.smc.policy.runtime;
 
 import java.util.Arrays;
-import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
@@ -9,8 +9,16 @@ import java.util.Map;
  * when it was created (only the names its code reads, frozen then) plus its own parameters and
  * assignments, which vanish with the call. A unit sees the variables a shell session kept plus its
  * own. Names are interned by the compiler, so lookups compare references.
+ *
+ * <p>The name {@code Variables}, unless assigned, answers these variables as a hash (as Ponder2):
+ * the first time it is asked for, every visible variable moves into that hash, which from then on
+ * is the frame's only store, so assignments show in the hash and {@code at:put:} and
+ * {@code remove:} on it change the variables.
  */
 final class VariableFrame {
+    /** The name that answers the frame's variables as a hash. */
+    static final String VARIABLES = "Variables";
+
     private static final int SMALL = 16;
     private static final String[] NONE = new String[0];
 
@@ -21,7 +29,8 @@ final class VariableFrame {
     private String[] names;
     private Object[] values;
     private int count;
-    private HashMap<String, Object> many;
+    private LinkedHashMap<String, Object> many;
+    private PHash hash;
 
     /** A unit's frame; {@code outer} holds a session's kept variables (read-only here). */
     VariableFrame(Execution ex, Map<String, Object> outer) {
@@ -33,12 +42,16 @@ final class VariableFrame {
         this.values = new Object[4];
     }
 
-    /** A block call's frame; {@code params} is shared and never changed. */
-    VariableFrame(Execution ex, String[] capturedNames, Object[] capturedValues, String[] params, Object[] args) {
+    /**
+     * A block call's frame; {@code params} is shared and never changed. {@code scope} is every
+     * variable seen where the block was made, for a block that reads {@code Variables} (else empty).
+     */
+    VariableFrame(Execution ex, String[] capturedNames, Object[] capturedValues, String[] params, Object[] args,
+            Map<String, Object> scope) {
         this.ex = ex;
         this.capturedNames = capturedNames;
         this.capturedValues = capturedValues;
-        this.outer = Map.of();
+        this.outer = scope;
         this.names = params;
         this.values = args.length == params.length ? args : Arrays.copyOf(args, params.length);
         this.count = params.length;
@@ -46,6 +59,9 @@ final class VariableFrame {
 
     /** The variable's value, or {@code null} when there is no such variable. */
     Object lookup(String name) {
+        if (hash != null) {
+            return hash.get(name);
+        }
         if (many != null) {
             Object v = many.get(name);
             if (v != null) {
@@ -67,6 +83,10 @@ final class VariableFrame {
     }
 
     void set(String name, Object value) {
+        if (hash != null) {
+            hash.put(name, value);
+            return;
+        }
         if (many != null) {
             many.put(name, value);
             return;
@@ -78,7 +98,7 @@ final class VariableFrame {
             }
         }
         if (count == SMALL) {
-            many = new HashMap<>();
+            many = new LinkedHashMap<>();
             for (int i = 0; i < count; i++) {
                 many.put(names[i], values[i]);
             }
@@ -94,21 +114,66 @@ final class VariableFrame {
         count++;
     }
 
-    /** The current values of {@code free} (null where a name is not a variable), for a new block. */
+    /**
+     * The frame's variables as a hash ({@code Variables}); made on first use from every visible
+     * variable (a session's kept ones, captured ones, then this frame's own, in that order).
+     */
+    PHash variables() {
+        if (hash == null) {
+            hash = new PHash(visible());
+        }
+        return hash;
+    }
+
+    /** Every variable this frame sees, by name, in the order {@link #variables()} lists them. */
+    private Map<String, Object> visible() {
+        if (hash != null) {
+            return new LinkedHashMap<>(hash.asMap());
+        }
+        LinkedHashMap<String, Object> all = new LinkedHashMap<>(outer);
+        for (int i = 0; i < capturedNames.length; i++) {
+            if (capturedValues[i] != null) {
+                all.put(capturedNames[i], capturedValues[i]);
+            }
+        }
+        all.putAll(locals());
+        return all;
+    }
+
+    /**
+     * The current values of {@code free} (null where a name is not a variable), for a new block. A
+     * block never captures {@code Variables}: in each call that name is the call's own hash.
+     */
     Object[] capture(String[] free) {
         Object[] captured = new Object[free.length];
         for (int i = 0; i < free.length; i++) {
-            captured[i] = lookup(free[i]);
+            captured[i] = free[i] == VARIABLES ? null : lookup(free[i]);
         }
         return captured;
+    }
+
+    /** Every visible variable but {@code Variables} (names interned), for a block that reads the hash. */
+    Map<String, Object> snapshot() {
+        Map<String, Object> all = new LinkedHashMap<>();
+        visible().forEach((name, value) -> {
+            if (!name.equals(VARIABLES)) {
+                all.put(name.intern(), value);
+            }
+        });
+        return all;
+    }
+
+    /** The variables a shell session keeps after this unit: all of them once the hash was used. */
+    Map<String, Object> kept() {
+        return visible();
     }
 
     /** The unit's own variables (for a shell session that keeps them across inputs). */
     Map<String, Object> locals() {
         if (many != null) {
-            return new HashMap<>(many);
+            return new LinkedHashMap<>(many);
         }
-        HashMap<String, Object> out = new HashMap<>();
+        LinkedHashMap<String, Object> out = new LinkedHashMap<>();
         for (int i = 0; i < count; i++) {
             out.put(names[i], values[i]);
         }

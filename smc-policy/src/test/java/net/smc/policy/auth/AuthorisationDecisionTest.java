@@ -15,7 +15,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * The authorisation decision of PONDERTALK.md section 9, one row per rule, each run through a real
+ * The authorisation decision of smc-policy/PONDERTALK.md section 9, one row per rule, each run through a real
  * cell. The boot unit builds two domain trees:
  *
  * <pre>

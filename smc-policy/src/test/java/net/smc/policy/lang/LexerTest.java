@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** The lexical rules of PONDERTALK.md section 2: token kinds, values, positions and lexical errors. */
+/** The lexical rules of smc-policy/PONDERTALK.md section 2: token kinds, values, positions and lexical errors. */
 class LexerTest {
     private static final String SOURCE = "t.p2";
 

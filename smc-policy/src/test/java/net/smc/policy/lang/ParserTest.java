@@ -15,7 +15,7 @@ import java.util.Map;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 
-/** The grammar of PONDERTALK.md section 3: tree shapes, syntax errors, recovery, limits and includes. */
+/** The grammar of smc-policy/PONDERTALK.md section 3: tree shapes, syntax errors, recovery, limits and includes. */
 class ParserTest {
     private static final String SOURCE = "t.p2";
 

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import net.smc.policy.api.Managed;
 import net.smc.policy.api.Op;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
@@ -24,7 +25,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
- * Managed objects driven from PonderTalk (PONDERTALK.md section 6): dispatch tables built from
+ * Managed objects driven from PonderTalk (smc-policy/PONDERTALK.md section 6): dispatch tables built from
  * {@link Op} annotations, argument conversion by declared type, results, and the errors of each.
  */
 class DispatchTest {

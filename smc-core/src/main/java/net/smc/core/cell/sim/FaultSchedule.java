@@ -29,6 +29,7 @@ public final class FaultSchedule {
     private final long seed;
     private final long faultMillis;
     private Consumer<String> log = line -> { };
+    private Consumer<CellEvent> events = e -> { };
 
     /**
      * @param distributed the reconnaissance mission, distributed scheme
@@ -46,6 +47,12 @@ public final class FaultSchedule {
     /** Receives a line per fault applied. */
     public FaultSchedule log(Consumer<String> log) {
         this.log = log;
+        return this;
+    }
+
+    /** Receives every event of the run (each cell's decisions and the faults applied), in order. */
+    public FaultSchedule events(Consumer<CellEvent> events) {
+        this.events = events;
         return this;
     }
 
@@ -81,7 +88,8 @@ public final class FaultSchedule {
         if (random.nextInt(8) == 0) {
             team.add(SimVehicle.command("rcdr").asCommander().asRogue());
         }
-        TeamSimulation sim = TeamSimulation.builder(mission, repository, seed).vehicles(team).link(link(random)).build();
+        TeamSimulation sim = TeamSimulation.builder(mission, repository, seed).vehicles(team).link(link(random))
+                .listener(events).build();
         sim.start();
         List<String> honest = team.stream().filter(v -> !v.rogue()).map(SimVehicle::id).toList();
         List<String> crashed = new ArrayList<>();

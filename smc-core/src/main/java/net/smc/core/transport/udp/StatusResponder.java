@@ -9,7 +9,11 @@ import net.smc.core.transport.Address;
 import static java.nio.charset.StandardCharsets.US_ASCII;
 import static java.nio.charset.StandardCharsets.UTF_8;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
 import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Objects;
 import java.util.function.Supplier;
 
@@ -51,6 +55,7 @@ import org.slf4j.LoggerFactory;
  */
 public final class StatusResponder extends ForwardingTransport {
     private static final Logger LOG = LoggerFactory.getLogger(StatusResponder.class);
+    private static final ObjectMapper JSON = new ObjectMapper();
 
     /** The first 8 bytes of a status query: ASCII {@code SMC?STAT}. */
     public static final byte[] QUERY_MAGIC = "SMC?STAT".getBytes(US_ASCII);
@@ -198,8 +203,7 @@ public final class StatusResponder extends ForwardingTransport {
     private byte[] reply() {
         byte[] json = viewBytes();
         if (json.length > MAX_JSON_BYTES) {
-            json = ("{\"error\":\"status view too large\",\"bytes\":" + json.length + ",\"limit\":" + MAX_JSON_BYTES + "}")
-                    .getBytes(UTF_8);
+            json = errorObject("status view too large", "bytes", json.length, "limit", MAX_JSON_BYTES);
         }
         byte[] reply = Arrays.copyOf(REPLY_MAGIC, HEADER_BYTES + json.length);
         reply[REPLY_MAGIC.length] = VERSION;
@@ -213,7 +217,21 @@ public final class StatusResponder extends ForwardingTransport {
             return Objects.requireNonNull(view.get(), "the status view supplier returned null").getBytes(UTF_8);
         } catch (RuntimeException e) {
             LOG.warn("status view of {} failed", localAddress(), e);
-            return ("{\"error\":\"status view failed\",\"exception\":\"" + e.getClass().getName() + "\"}").getBytes(UTF_8);
+            return errorObject("status view failed", "exception", e.getClass().getName());
+        }
+    }
+
+    /** {@code {"error": what, name1: value1, ...}} as UTF-8 JSON. */
+    private static byte[] errorObject(String what, Object... namesAndValues) {
+        Map<String, Object> fields = new LinkedHashMap<>();
+        fields.put("error", what);
+        for (int i = 0; i < namesAndValues.length; i += 2) {
+            fields.put((String) namesAndValues[i], namesAndValues[i + 1]);
+        }
+        try {
+            return JSON.writeValueAsBytes(fields);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("cannot write a status error object: " + e.getMessage(), e);
         }
     }
 

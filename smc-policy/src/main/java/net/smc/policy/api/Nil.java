@@ -1,4 +1,4 @@
-package net.smc.policy.runtime;
+package net.smc.policy.api;
 
 /** PonderTalk's nil: answered by an untaken branch, a missing domain entry and the like. */
 public final class Nil {

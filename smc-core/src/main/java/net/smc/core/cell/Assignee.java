@@ -1,0 +1,268 @@
+package net.smc.core.cell;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+import net.smc.core.cell.TeamState.Incoming;
+import net.smc.core.cell.TeamState.Parent;
+import net.smc.core.message.AssignmentResponse;
+import net.smc.core.message.CapabilityReply;
+import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.Discovery;
+import net.smc.core.message.DiscoveryReply;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Invocation;
+import net.smc.core.message.Leave;
+import net.smc.core.message.PolicyRef;
+import net.smc.core.message.PolicyReply;
+import net.smc.core.message.PolicyRequest;
+import net.smc.core.message.RoleAssignment;
+import net.smc.core.mission.Mission;
+import net.smc.core.role.RoleLoadException;
+import net.smc.core.transport.Address;
+
+/**
+ * Discovery and role assignment from the vehicle's side (Algorithm 1, lines 8-15): answers
+ * discoveries and capability requests, takes a role assignment once its policies have arrived (or
+ * refuses it, saying why), moves up to a role of higher priority, and gives a role back when its
+ * parent asks. Owns DISCOVERY (handing a rival commander's beacon to {@link Merge}),
+ * CAPABILITY_REQUEST, ROLE_ASSIGNMENT, POLICY_REPLY and INVOCATION.
+ */
+final class Assignee {
+    private final TeamContext ctx;
+    private final TeamState st;
+    private final Seating seating;
+    private final Merge merge;
+
+    Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge) {
+        this.ctx = ctx;
+        this.st = st;
+        this.seating = seating;
+        this.merge = merge;
+    }
+
+    void onDiscovery(Envelope env, Discovery d) {
+        if (!d.mission().equals(ctx.missionId())) {
+            return;
+        }
+        if (st.acting && d.role().equals(Mission.COMMANDER)) {
+            merge.meetCommander(env.sender(), d.epoch());
+            return;
+        }
+        boolean promotable = st.parent != null && !st.parent.vehicle().equals(env.sender())
+                && ctx.slots().managedRoles(d.role()).stream().anyMatch(r -> promotion(r, d.epoch()));
+        if ((!st.free() || st.left) && !promotable) {
+            return; // Algorithm 1, line 9: a vehicle with a parent ignores discovery (unless it could move up)
+        }
+        ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
+    }
+
+    void onCapabilityRequest(Envelope env, CapabilityRequest r) {
+        boolean fromParent = st.parent != null && st.parent.vehicle().equals(env.sender());
+        if (!fromParent && (!st.free() || st.left) && !promotion(r.role(), st.epoch)) {
+            return;
+        }
+        ctx.address(env.sender()).ifPresent(a -> ctx.comm().send(a, new CapabilityReply(env.id(), ctx.description())));
+    }
+
+    void onRoleAssignment(Envelope env, RoleAssignment a) {
+        String from = env.sender();
+        Optional<Address> back = ctx.address(from);
+        if (back.isEmpty()) {
+            return;
+        }
+        String refusal = refusal(from, a);
+        if (refusal != null) {
+            ctx.emit(CellEvent.Kind.REFUSED, a.role() + " from " + from + ": " + refusal);
+            ctx.comm().send(back.get(), new AssignmentResponse(env.id(), a.role(), false, refusal));
+            return;
+        }
+        if (st.incoming != null && st.incoming.envelopeId() == env.id() && st.incoming.from().equals(from)) {
+            return;
+        }
+        st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
+        Set<String> listed = new LinkedHashSet<>();
+        for (PolicyRef ref : a.policies()) {
+            listed.add(ref.uri());
+            if (!ctx.store().has(ref)) {
+                ctx.comm().send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        // Whatever the role and the roles below it need that the assignment did not name.
+        for (String uri : ctx.subtreePolicyUris(a.role())) {
+            if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                ctx.comm().send(back.get(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
+        completeIfReady();
+    }
+
+    /** Why this cell will not take a role from {@code from}, or null when it will. */
+    private String refusal(String from, RoleAssignment a) {
+        if (!a.mission().equals(ctx.missionId())) {
+            return "assignment is for mission '" + a.mission() + "', this vehicle serves '" + ctx.missionId() + "'";
+        }
+        if (ctx.slots().mission().role(a.role()).isEmpty() || a.role().equals(Mission.COMMANDER)) {
+            return "role '" + a.role() + "' cannot be assigned in mission '" + ctx.missionId() + "'";
+        }
+        if (st.acting) {
+            return "this vehicle is the acting commander";
+        }
+        if (st.left) {
+            return "this vehicle has left the team";
+        }
+        if (a.ancestors().contains(ctx.self())) {
+            return "'" + from + "' descends from this vehicle; taking a role from it would close a cycle";
+        }
+        Long until = st.abandoned.get(from);
+        if (until != null && ctx.clock().nowMillis() < until) {
+            return "'" + from + "' may still name this vehicle as its parent";
+        }
+        if (st.parent != null && !st.parent.vehicle().equals(from) && !promotion(a.role(), a.epoch())) {
+            return "this vehicle already has parent '" + st.parent.vehicle() + "'";
+        }
+        if (st.incoming != null && !st.incoming.from().equals(from)) {
+            return "this vehicle is taking a role from '" + st.incoming.from() + "'";
+        }
+        if (st.incoming != null && !st.incoming.assignment().role().equals(a.role())) {
+            return "this vehicle is still taking role '" + st.incoming.assignment().role() + "'; one role at a time";
+        }
+        if (!ctx.slots().role(a.role()).requirement().isMetBy(ctx.description())) {
+            return "this vehicle lacks " + ctx.slots().role(a.role()).requirement().missingFrom(ctx.description()).describe();
+        }
+        return null;
+    }
+
+    private void completeIfReady() {
+        Incoming in = st.incoming;
+        if (in == null || !in.assignment().policies().stream().allMatch(ctx.store()::has)
+                || !ctx.policiesHeld(in.assignment().role())) {
+            return;
+        }
+        st.incoming = null;
+        RoleAssignment a = in.assignment();
+        Seat seat = new Seat(a.role(), slotOf(a));
+        if (st.parent != null && !st.parent.vehicle().equals(in.from())) {
+            if (!promotion(a.role(), a.epoch())) {
+                ctx.emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": no longer free to move up");
+                ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), false, "no longer free"));
+                return;
+            }
+            ctx.emit(CellEvent.Kind.RELEASED, "moves up from " + st.seats + " under " + st.parent.vehicle() + " to " + seat
+                    + " under " + in.from());
+            ctx.send(st.parent.address(), new Leave("'" + ctx.self() + "' moves up to " + seat + " under '" + in.from() + "'"));
+            seating.dropEverything("moves up to " + seat);
+        }
+        boolean sameParent = st.parent != null && st.parent.vehicle().equals(in.from());
+        List<Seat> before = sameParent ? List.copyOf(st.seats) : List.of();
+        // What the parent says this vehicle keeps from it, then its own (hosted) seats that still fit.
+        List<Seat> kept = before.stream().filter(s -> a.keeps().contains(s.toString())).toList();
+        List<Seat> after = new ArrayList<>(ctx.slots().afterAssign(kept, seat));
+        for (Seat s : before) {
+            if (!kept.contains(s) && ownsItself(before, s) && ctx.canAlsoHold(after, s)) {
+                after.add(s);
+            }
+        }
+        if (before.stream().noneMatch(s -> s.role().equals(seat.role()))) {
+            try {
+                ctx.host().loadRole(seat.role(), ctx.store());
+            } catch (RoleLoadException e) {
+                String why = "loading role '" + seat.role() + "' failed: " + e.getMessage();
+                ctx.emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": " + why);
+                ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), false, TeamContext.truncate(why)));
+                return;
+            }
+        }
+        Set<String> keptRoles = new LinkedHashSet<>();
+        after.forEach(s -> keptRoles.add(s.role()));
+        for (Seat s : before) {
+            if (!after.contains(s)) {
+                if (!keptRoles.contains(s.role())) {
+                    ctx.host().withdrawRole(s.role());
+                }
+                ctx.emit(CellEvent.Kind.RELEASED, s + ": gives way to " + seat);
+            }
+        }
+        st.seats.clear();
+        st.seats.addAll(after);
+        st.parent = new Parent(in.from(), in.address());
+        st.ancestors = TeamContext.lineage(in.from(), a.ancestors());
+        st.epoch = a.epoch();
+        st.lastStatusMillis = ctx.clock().nowMillis();
+        // The answer leaves now; the parent hears it later, so its failure timeout starts later still.
+        st.leaseUntilMillis = ctx.clock().nowMillis() + ctx.timing().leaseMillis();
+        st.lapseNoted = false;
+        if (!ctx.slots().role(seat.role()).isSecondary() || st.identity == null) {
+            st.identity = a.identity();
+        }
+        seating.recomputeOwnership();
+        ctx.emit(CellEvent.Kind.ACCEPTED, seat + " " + a.identity() + " from " + in.from() + ", holds " + st.seats);
+        ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), true, ""));
+        if (!a.handover().isEmpty()) {
+            st.handedOver = a.handover();
+            ctx.host().raise("handover", "handover", a.role(), a.handover());
+        }
+    }
+
+    /**
+     * Whether this vehicle, attached to its team, would move up to {@code role}: a role before its
+     * own primary role in the mission's order (the surveyor before the detector), offered within its
+     * own team, that it is able to hold. A team short of a surveyor then takes one from among its
+     * detectors, as the reasonably-optimal configuration would.
+     */
+    private boolean promotion(String role, long offeredEpoch) {
+        if (st.parent == null || st.suspended() || st.seats.isEmpty() || st.acting || offeredEpoch != st.epoch
+                || ctx.slots().mission().role(role).isEmpty() || role.equals(Mission.COMMANDER)) {
+            return false;
+        }
+        String mine = st.seats.get(0).role();
+        return ctx.slots().rank(role) < ctx.slots().rank(mine) && ctx.slots().role(role).requirement().isMetBy(ctx.description());
+    }
+
+    /** Whether {@code seat} is owned by another of {@code held}: a secondary seat this vehicle hosts itself. */
+    private boolean ownsItself(List<Seat> held, Seat seat) {
+        return ctx.slots().owner(seat).map(held::contains).orElse(false);
+    }
+
+    private int slotOf(RoleAssignment a) {
+        for (int s = 0; s < ctx.slots().optimal(a.role()); s++) {
+            if (ctx.slots().sequence(new Seat(a.role(), s)) == a.identity().sequence()) {
+                return s;
+            }
+        }
+        return 0;
+    }
+
+    void onPolicyReply(Envelope env, PolicyReply r) {
+        if (!ctx.store().accept(r.uri(), r.version(), r.text())) {
+            ctx.reject(env, "policy " + r.uri() + " arrived with version " + r.version() + " but its text has version "
+                    + PolicyStore.versionOf(r.text()));
+            return;
+        }
+        completeIfReady();
+    }
+
+    void onInvocation(Envelope env, Invocation i) {
+        if (!i.operation().equals("release") || st.parent == null || !st.parent.vehicle().equals(env.sender())) {
+            ctx.reject(env, "invocation '" + i.operation() + "' on role '" + i.role() + "' is not accepted from "
+                    + env.sender());
+            return;
+        }
+        st.seats.stream().filter(s -> s.role().equals(i.role())).findFirst()
+                .ifPresent(s -> seating.dropOwnSeat(s, "released by its parent"));
+    }
+
+    /** Refuses the role being taken when its policies did not arrive in time. */
+    void expire(long now) {
+        if (st.incoming != null && now - st.incoming.sinceMillis() > ctx.timing().failureTimeoutMillis()) {
+            Incoming in = st.incoming;
+            st.incoming = null;
+            ctx.emit(CellEvent.Kind.REFUSED, in.assignment().role() + " from " + in.from() + ": its policies did not arrive");
+            ctx.send(in.address(), new AssignmentResponse(in.envelopeId(), in.assignment().role(), false,
+                    "policies did not arrive in time"));
+        }
+    }
+}

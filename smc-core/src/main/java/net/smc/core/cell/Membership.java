@@ -1,0 +1,135 @@
+package net.smc.core.cell;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import net.smc.core.cell.TeamState.Child;
+import net.smc.core.cell.TeamState.Parent;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Heartbeat;
+import net.smc.core.message.Leave;
+import net.smc.core.message.RoleEvent;
+import net.smc.core.message.Status;
+
+/**
+ * Membership as a child: heartbeats and subtree reports to the parent, the lease its statuses renew
+ * (SUSPENDED when it lapses, ORPHANED when the parent is lost), adoption by a backup that took over,
+ * and Leaves from parent or children. Owns STATUS and LEAVE.
+ */
+final class Membership {
+    private final TeamContext ctx;
+    private final TeamState st;
+    /** Heartbeats between unchanged subtree reports. */
+    private static final int REPORT_TICKS = 4;
+
+    private final Seating seating;
+    private final TeamCounts counts;
+    private final BackupCommander backup;
+    private final Reports reports;
+    /** Send times of recent heartbeats, by envelope id, to date the parent's echoes. */
+    private final Map<Long, Long> heartbeatSentAt = new LinkedHashMap<>(32, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
+            return size() > 64;
+        }
+    };
+    /** Heartbeats until an unchanged subtree report is sent again. */
+    private int reportCountdown;
+    private List<Object> lastReport = List.of();
+
+    Membership(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Reports reports) {
+        this.ctx = ctx;
+        this.st = st;
+        this.seating = seating;
+        this.counts = counts;
+        this.backup = backup;
+        this.reports = reports;
+    }
+
+    void asChild(long now) {
+        if (st.parent == null) {
+            return;
+        }
+        if (st.seats.isEmpty()) {
+            ctx.send(st.parent.address(), new Leave("'" + ctx.self() + "' holds no role any more"));
+            seating.dropEverything("holds no role any more");
+            return;
+        }
+        long silent = now - st.lastStatusMillis;
+        if (st.backupRank >= 0 && st.commander != null && st.parent.vehicle().equals(st.commander)
+                && silent > ctx.timing().takeoverMillis(st.backupRank)) {
+            backup.takeOver();
+            return;
+        }
+        if (silent > ctx.timing().orphanMillis()) {
+            ctx.emit(CellEvent.Kind.ORPHANED, "nothing from parent " + st.parent.vehicle() + " for " + silent + " ms; drops "
+                    + st.seats);
+            seating.dropEverything("parent " + st.parent.vehicle() + " is lost");
+            return;
+        }
+        if (st.suspended() && !st.lapseNoted) {
+            st.lapseNoted = true;
+            ctx.emit(CellEvent.Kind.SUSPENDED, "lease from " + st.parent.vehicle() + " ran out " + (now - st.leaseUntilMillis)
+                    + " ms ago; last status " + silent + " ms ago");
+        }
+        // The heartbeat's state field carries the slot of the primary seat, so the parent knows the exact seat.
+        long id = ctx.comm().send(st.parent.address(), new Heartbeat(st.seats.get(0).role(), st.epoch, st.seats.get(0).slot()));
+        heartbeatSentAt.put(id, now);
+        List<Object> report = reports.reportValues();
+        if (!report.equals(lastReport) || --reportCountdown <= 0) {
+            reportCountdown = REPORT_TICKS;
+            lastReport = report;
+            ctx.send(st.parent.address(), new RoleEvent(st.seats.get(0).role(), "report", report));
+        }
+    }
+
+    void onStatus(Envelope env, Status s) {
+        if (!s.mission().equals(ctx.missionId())) {
+            return;
+        }
+        String from = env.sender();
+        if (st.parent != null && st.parent.vehicle().equals(from)) {
+            st.lastStatusMillis = ctx.clock().nowMillis();
+            Long sentAt = heartbeatSentAt.get(s.echo());
+            if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
+                st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
+                st.lapseNoted = false;
+            }
+            st.epoch = s.epoch();
+            st.commander = s.commander();
+            st.teamSize = s.teamSize();
+            st.ancestors = TeamContext.lineage(from, s.ancestors());
+            return;
+        }
+        // A backup that took over claims the old commander's children.
+        if (st.parent != null && st.parent.vehicle().equals(st.commander) && s.commander().equals(from) && s.epoch() > st.epoch) {
+            ctx.emit(CellEvent.Kind.ADOPTED, "new commander " + from + " of epoch " + s.epoch() + " replaces " + st.commander);
+            st.parent = new Parent(from, ctx.address(from).orElse(st.parent.address()));
+            st.ancestors = List.of(from);
+            st.commander = from;
+            st.epoch = s.epoch();
+            st.lastStatusMillis = ctx.clock().nowMillis();
+            // Seats granted by the old commander count again only once the new one has echoed a heartbeat.
+            st.leaseUntilMillis = ctx.clock().nowMillis() - 1;
+            st.backupRank = -1;
+            st.roster = null;
+            reportCountdown = 0;
+        }
+    }
+
+    void onLeave(Envelope env, Leave l) {
+        String from = env.sender();
+        if (st.parent != null && st.parent.vehicle().equals(from)) {
+            ctx.emit(CellEvent.Kind.LEFT, "parent " + from + " says: " + l.reason());
+            seating.dropEverything("parent " + from + " let go: " + l.reason());
+            return;
+        }
+        Child child = st.children.remove(from);
+        if (child != null) {
+            seating.vacate(child);
+            ctx.emit(CellEvent.Kind.LEFT, "child " + from + " left (" + l.reason() + "); vacated " + child.seats);
+            counts.updateMissionState();
+        }
+    }
+}

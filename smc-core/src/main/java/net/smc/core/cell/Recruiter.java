@@ -1,0 +1,315 @@
+package net.smc.core.cell;
+
+import java.math.BigDecimal;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.cell.TeamState.Child;
+import net.smc.core.cell.TeamState.Heard;
+import net.smc.core.cell.TeamState.Owned;
+import net.smc.core.cell.TeamState.PendingCapability;
+import net.smc.core.comm.DeliveryListener;
+import net.smc.core.comm.FailureReason;
+import net.smc.core.message.AssignmentResponse;
+import net.smc.core.message.CapabilityReply;
+import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.DiscoveryReply;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Invocation;
+import net.smc.core.message.Leave;
+import net.smc.core.message.PolicyReply;
+import net.smc.core.message.PolicyRequest;
+import net.smc.core.message.RoleAssignment;
+import net.smc.policy.api.Nil;
+import net.smc.core.transport.Address;
+
+/**
+ * Discovery and role assignment as a manager (the paper's Algorithms 1 and 2, the parent's side):
+ * hears discovery replies and raises {@code newUAV} (Table I), asks for full capability
+ * descriptions, gives seats (taking a hosted one back from its host first), and settles the answers.
+ * Serves policy files to assignees. Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE and
+ * POLICY_REQUEST.
+ */
+final class Recruiter {
+    private final TeamContext ctx;
+    private final TeamState st;
+    private final Seating seating;
+    private final TeamCounts counts;
+    private final BackupCommander backup;
+
+    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup) {
+        this.ctx = ctx;
+        this.st = st;
+        this.seating = seating;
+        this.counts = counts;
+        this.backup = backup;
+    }
+
+    void onDiscoveryReply(Envelope env, DiscoveryReply r) {
+        if (st.owned.isEmpty() || !r.mission().equals(ctx.missionId())) {
+            return;
+        }
+        if (!r.summary().vehicle().equals(env.sender())) {
+            ctx.reject(env, "capability summary names vehicle '" + r.summary().vehicle() + "'");
+            return;
+        }
+        st.heard.put(env.sender(), new Heard(r.summary(), ctx.clock().nowMillis()));
+        if (st.children.containsKey(env.sender()) || !st.hasVacancy()) {
+            return;
+        }
+        // Table I decides whom to ask: newUAV(name uav lowLevelCap credential).
+        // A vehicle that presented no credential (or a cell without authentication) gives PonderTalk nil.
+        Object credential = ctx.host().credentialOf(env.sender()).<Object>map(c -> c).orElse(Nil.NIL);
+        ctx.host().raise("newUAV", "newUAV", env.sender(), r.summary(), credential);
+    }
+
+    /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
+    void requestFullCapability(String uav, String role) {
+        if (ctx.slots().mission().role(role).isEmpty()) {
+            ctx.emit(CellEvent.Kind.REJECTED, "policy asked for unknown role '" + role + "' for " + uav);
+            return;
+        }
+        if (st.owned.keySet().stream().noneMatch(s -> s.role().equals(role) && st.open(s))) {
+            return; // nothing to give for that role now
+        }
+        PendingCapability pending = st.capabilityRequests.get(uav);
+        if (pending != null) {
+            pending.roles.add(role);
+            return;
+        }
+        Optional<Address> to = ctx.address(uav);
+        if (to.isEmpty()) {
+            return;
+        }
+        pending = new PendingCapability(ctx.clock().nowMillis());
+        pending.roles.add(role);
+        st.capabilityRequests.put(uav, pending);
+        ctx.comm().send(to.get(), new CapabilityRequest(role), TeamContext.failureOnly(() -> st.capabilityRequests.remove(uav)));
+    }
+
+    void onCapabilityReply(Envelope env, CapabilityReply r) {
+        PendingCapability pending = st.capabilityRequests.remove(env.sender());
+        if (pending == null) {
+            return;
+        }
+        CapabilityDescription full = r.description();
+        if (!full.vehicle().equals(env.sender())) {
+            ctx.reject(env, "capability description names vehicle '" + full.vehicle() + "'");
+            return;
+        }
+        Child known = st.children.get(env.sender());
+        if (known != null && !known.seats.isEmpty()) {
+            known.description = full; // a child (from a roster, say): now this cell knows what it can do
+            return;
+        }
+        // Algorithm 2, line 3: the description must match the requirement of one of the roles.
+        Optional<Seat> seat = st.owned.keySet().stream()
+                .filter(s -> pending.roles.contains(s.role()) && st.open(s))
+                .filter(s -> ctx.slots().role(s.role()).requirement().isMetBy(full))
+                .min(this::preferVacant);
+        if (seat.isEmpty()) {
+            return;
+        }
+        if (st.owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
+            return; // already being given a seat
+        }
+        giveSeat(env.sender(), full, seat.get());
+    }
+
+    /** Vacant seats first, then seats a vehicle of another role hosts; by priority. */
+    private int preferVacant(Seat a, Seat b) {
+        int c = Boolean.compare(st.owned.get(a).holder != null, st.owned.get(b).holder != null);
+        return c != 0 ? c : ctx.slots().compare(a, b);
+    }
+
+    /** Gives {@code seat} to {@code vehicle}, releasing it from a host first. */
+    void giveSeat(String vehicle, CapabilityDescription full, Seat seat) {
+        Owned o = st.owned.get(seat);
+        if (o.holder != null) {
+            String hostVehicle = o.holder;
+            o.pendingFor = vehicle;
+            o.pendingSince = ctx.clock().nowMillis();
+            release(hostVehicle, seat, () -> {
+                o.pendingFor = null;
+                if (o.holder == null) {
+                    assign(vehicle, full, seat);
+                }
+            });
+            return;
+        }
+        assign(vehicle, full, seat);
+    }
+
+    /** Takes a hosted secondary seat back from its host (this cell, or a child), then runs {@code then}. */
+    private void release(String holder, Seat seat, Runnable then) {
+        if (holder.equals(ctx.self())) {
+            seating.dropOwnSeat(seat, "makes way for a vehicle of its own");
+            st.owned.get(seat).holder = null;
+            then.run();
+            return;
+        }
+        Child child = st.children.get(holder);
+        if (child == null) {
+            st.owned.get(seat).holder = null;
+            then.run();
+            return;
+        }
+        ctx.comm().send(child.address, new Invocation(seat.role(), "release", List.of(BigDecimal.valueOf(seat.slot()))),
+                new DeliveryListener() {
+                    @Override
+                    public void delivered(long id) {
+                        Child c = st.children.get(holder);
+                        if (c != null) {
+                            c.seats = c.seats.stream().filter(s -> !s.equals(seat)).toList();
+                        }
+                        Owned o = st.owned.get(seat);
+                        if (o != null && holder.equals(o.holder)) {
+                            o.holder = null;
+                        }
+                        then.run();
+                    }
+
+                    @Override
+                    public void failed(long id, FailureReason reason) {
+                        Owned o = st.owned.get(seat);
+                        if (o != null) {
+                            o.pendingFor = null;
+                        }
+                    }
+                });
+    }
+
+    /** Sends the role assignment (Algorithm 1, lines 6 and 15, once accepted). */
+    void assign(String vehicle, CapabilityDescription full, Seat seat) {
+        Optional<Address> to = ctx.address(vehicle);
+        Owned o = st.owned.get(seat);
+        if (to.isEmpty() || o == null) {
+            return;
+        }
+        List<Object> state = st.handover.getOrDefault(seat.role(), List.of());
+        Child child = st.children.computeIfAbsent(vehicle, Child::new);
+        RoleAssignment assignment = new RoleAssignment(ctx.missionId(), seat.role(), ctx.identityOf(seat), ctx.self(),
+                ctx.policyRefs(seat.role()), st.epoch, state, child.seats.stream().map(Seat::toString).toList(), st.ancestors);
+        o.pendingFor = vehicle;
+        o.pendingSince = ctx.clock().nowMillis();
+        child.address = to.get();
+        child.description = full;
+        if (child.seats.isEmpty()) {
+            child.lastHeard = ctx.clock().nowMillis();
+        }
+        ctx.emit(CellEvent.Kind.ASSIGNING, seat + " " + ctx.identityOf(seat) + " to " + vehicle
+                + (state.isEmpty() ? "" : " with handed-over state " + state));
+        // Not delivered is not proof of not received (the Acks may be lost): the reservation stays
+        // until it expires, an answer comes, or the vehicle's heartbeat shows it took the seat.
+        ctx.comm().send(to.get(), assignment, TeamContext.failureOnly(() -> ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
+                + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
+                + ctx.pendingMillis() + " ms")));
+    }
+
+    void onAssignmentResponse(Envelope env, AssignmentResponse r) {
+        String vehicle = env.sender();
+        Optional<Seat> seat = st.owned.entrySet().stream()
+                .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
+                .map(Map.Entry::getKey).findFirst();
+        if (seat.isEmpty()) {
+            Child child = st.children.get(vehicle);
+            boolean known = child != null && child.seats.stream().anyMatch(s -> s.role().equals(r.role()));
+            if (r.accepted() && !known) {
+                revoke(vehicle, r.role());
+            }
+            return; // known: its heartbeat already told us it took the seat
+        }
+        if (!r.accepted()) {
+            assignmentFailed(vehicle, seat.get(), "refused: " + r.reason());
+            return;
+        }
+        accepted(vehicle, seat.get());
+        Child c = st.children.get(vehicle);
+        if (c != null) {
+            c.confirmedBy.put(seat.get(), env.id());
+        }
+    }
+
+    /**
+     * A vehicle took a seat this cell no longer reserves for it (the reservation expired): it must
+     * give the role back, or it would hold a seat that may have gone to another.
+     */
+    private void revoke(String vehicle, String role) {
+        Child child = st.children.get(vehicle);
+        Optional<Address> to = ctx.address(vehicle);
+        if (to.isEmpty()) {
+            return;
+        }
+        ctx.emit(CellEvent.Kind.REJECTED, vehicle + " took " + role + " after its reservation expired; revoked");
+        if (child != null && !child.seats.isEmpty()) {
+            ctx.comm().send(to.get(), new Invocation(role, "release", List.of()));
+        } else {
+            ctx.send(to.get(), new Leave("'" + ctx.self() + "' no longer holds a seat of '" + role + "' for '" + vehicle + "'"));
+        }
+    }
+
+    /** The vehicle took the seat: it is now a child holding it. */
+    void accepted(String vehicle, Seat seatTaken) {
+        Optional<Seat> seat = Optional.of(seatTaken);
+        Owned o = st.owned.get(seat.get());
+        o.pendingFor = null;
+        o.holder = vehicle;
+        Child child = st.children.computeIfAbsent(vehicle, Child::new);
+        child.address = ctx.address(vehicle).orElse(child.address);
+        child.lastHeard = ctx.clock().nowMillis();
+        List<Seat> before = child.seats;
+        child.seats = ctx.slots().afterAssign(before, seat.get()).stream().filter(st.owned::containsKey).toList();
+        for (Seat dropped : before) {
+            if (!child.seats.contains(dropped) && st.owned.containsKey(dropped) && vehicle.equals(st.owned.get(dropped).holder)) {
+                st.owned.get(dropped).holder = null;
+            }
+        }
+        st.handover.remove(seat.get().role());
+        st.heard.remove(vehicle);
+        ctx.emit(CellEvent.Kind.ASSIGNED, seat.get() + " to " + vehicle + " (now holds " + child.seats + ")");
+        backup.sendRosterIfBackup();
+        counts.updateMissionState();
+    }
+
+    void assignmentFailed(String vehicle, Seat seat, String why) {
+        Owned o = st.owned.get(seat);
+        if (o == null || !vehicle.equals(o.pendingFor)) {
+            return;
+        }
+        o.pendingFor = null;
+        Child child = st.children.get(vehicle);
+        if (child != null && child.seats.isEmpty()) {
+            st.children.remove(vehicle);
+        }
+        ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
+    }
+
+    void onPolicyRequest(Envelope env, PolicyRequest r) {
+        Optional<PolicyStore.Entry> entry = ctx.store().get(r.uri(), r.version());
+        if (entry.isEmpty() && (st.acting || st.backupRank >= 0)) {
+            entry = ctx.fromRepository(r.uri()).filter(e -> r.version() == PolicyStore.ANY_VERSION
+                    || e.version() == r.version());
+        }
+        Optional<Address> back = ctx.address(env.sender());
+        if (entry.isEmpty() || back.isEmpty()) {
+            ctx.reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
+            return;
+        }
+        ctx.comm().send(back.get(), new PolicyReply(env.id(), r.uri(), entry.get().version(), entry.get().text()));
+    }
+
+    /** Drops stale requests and reservations, and reports each reservation that expired. */
+    void expire(long now) {
+        st.abandoned.values().removeIf(until -> now >= until);
+        st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
+        st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
+            Owned o = e.getValue();
+            if (o.pendingFor != null && now - o.pendingSince > ctx.pendingMillis()) {
+                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + ctx.pendingMillis() + " ms");
+            }
+        }
+    }
+}

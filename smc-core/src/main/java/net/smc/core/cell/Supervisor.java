@@ -1,0 +1,313 @@
+package net.smc.core.cell;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.cell.TeamState.Child;
+import net.smc.core.cell.TeamState.Owned;
+import net.smc.core.cell.TeamState.PendingCapability;
+import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Heartbeat;
+import net.smc.core.message.Leave;
+import net.smc.core.message.PolicyRequest;
+import net.smc.core.message.Status;
+import net.smc.core.mission.MissionRole;
+import net.smc.core.role.RoleLoadException;
+import net.smc.core.transport.Address;
+
+/**
+ * The manager's tick and its children's heartbeats: answers each heartbeat with a status (which
+ * renews the child's lease), detects silent children and raises {@code UAVFailure} (Table II),
+ * carries out re-assignment, and moves the team towards the reasonably-optimal configuration
+ * (secondary seats hosted, children promoted or swapped). Owns HEARTBEAT.
+ */
+final class Supervisor {
+    private final TeamContext ctx;
+    private final TeamState st;
+    private final Seating seating;
+    private final TeamCounts counts;
+    private final BackupCommander backup;
+    private final Recruiter recruiter;
+    private final Merge merge;
+
+    Supervisor(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Recruiter recruiter, Merge merge) {
+        this.ctx = ctx;
+        this.st = st;
+        this.seating = seating;
+        this.counts = counts;
+        this.backup = backup;
+        this.recruiter = recruiter;
+        this.merge = merge;
+    }
+
+    void onHeartbeat(Envelope env, Heartbeat h) {
+        Child child = st.children.get(env.sender());
+        Optional<Address> back = ctx.address(env.sender());
+        if (back.isEmpty()) {
+            return;
+        }
+        // The heartbeat names the child's primary seat: it must be one this cell gave it.
+        Seat primary = new Seat(h.role(), h.state());
+        if (child == null || !child.seats.contains(primary)) {
+            Optional<Seat> reserved = st.owned.containsKey(primary) && env.sender().equals(st.owned.get(primary).pendingFor)
+                    ? Optional.of(primary) : Optional.empty();
+            if (reserved.isEmpty()) {
+                if (child != null) {
+                    st.children.remove(env.sender());
+                    seating.vacate(child);
+                    ctx.emit(CellEvent.Kind.REJECTED, env.sender() + " reports role " + h.role() + " but holds " + child.seats
+                            + " from this cell; let go");
+                }
+                ctx.send(back.get(), new Leave("'" + env.sender() + "' is not a child of '" + ctx.self() + "' as " + h.role()));
+                return;
+            }
+            recruiter.accepted(env.sender(), reserved.get()); // its answer was lost; its heartbeat says it took the seat
+            child = st.children.get(env.sender());
+            child.confirmedBy.put(reserved.get(), env.id());
+        }
+        child.lastHeard = ctx.clock().nowMillis();
+        child.address = back.get();
+        child.lastHeartbeat = Math.max(child.lastHeartbeat, env.id());
+        sendStatus(child);
+    }
+
+    /** Tells a child the team's state, echoing its latest heartbeat heard (which renews its lease). */
+    private void sendStatus(Child child) {
+        if (child.address != null && st.identity != null) {
+            ctx.send(child.address, new Status(ctx.missionId(), st.identity, st.commander == null ? ctx.self() : st.commander, st.epoch,
+                    counts.teamSize(), child.consistent ? child.lastHeartbeat : 0, st.ancestors));
+        }
+    }
+
+    void asManager(long now) {
+        List<Child> silent = st.children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && now - c.lastHeard > ctx.timing().failureTimeoutMillis())
+                // An assignment in flight may still make it keep its seats: wait for its answer or expiry.
+                .filter(c -> st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor))).toList();
+        silent.forEach(c -> st.children.remove(c.vehicle));
+        for (Child child : silent) {
+            failed(child, now - child.lastHeard);
+        }
+        for (Child c : st.children.values()) {
+            if (!c.seats.isEmpty()) {
+                sendStatus(c);
+                if (c.description == null && !st.capabilityRequests.containsKey(c.vehicle) && c.address != null) {
+                    // A child known from a roster: learn what it can do, to move it if need be.
+                    st.capabilityRequests.put(c.vehicle, new PendingCapability(now));
+                    ctx.comm().send(c.address, new CapabilityRequest(c.seats.get(0).role()),
+                            TeamContext.failureOnly(() -> st.capabilityRequests.remove(c.vehicle)));
+                }
+            }
+        }
+        fillSecondarySeats();
+        swapTowardsOptimal(now);
+        boolean open = st.hasVacancy();
+        if (open && !st.discovering) {
+            ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
+                    + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
+        }
+        st.discovering = open;
+        if (open || (st.acting && st.ticks % Timing.BEACON_TICKS == 0)) {
+            merge.discover();
+        }
+        if (st.acting && st.ticks % Timing.ROSTER_TICKS == 0) {
+            backup.sendRoster();
+        }
+        counts.updateMissionState();
+    }
+
+    /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */
+    private void failed(Child child, long silentMillis) {
+        List<Seat> lost = child.seats;
+        seating.vacate(child);
+        for (Seat s : lost) {
+            st.handover.put(s.role(), child.state);
+        }
+        ctx.emit(CellEvent.Kind.FAILURE, child.vehicle + " silent for " + silentMillis + " ms; held " + lost
+                + ", last state " + child.state);
+        for (Seat s : lost) {
+            // Table II decides: UAVFailure(name role uav state).
+            ctx.host().raise("UAVFailure", "UAVFailure", s.role(), child.vehicle, child.state);
+        }
+        backup.sendRosterIfBackup();
+        counts.updateMissionState();
+    }
+
+    /**
+     * Asked by a policy ({@code root/role/<manager> reassign: role scheme: s}): find the role a new
+     * holder. A free capable vehicle first; else a child moved from a role of lower priority; else
+     * the team contracts (the seat stays vacant, a secondary one returns to its primary's vehicle).
+     */
+    void reassign(String managingRole, String role, String scheme) {
+        Optional<Seat> seat = st.owned.keySet().stream().filter(s -> s.role().equals(role) && st.open(s)
+                && st.owned.get(s).holder == null).min(ctx.slots()::compare);
+        if (seat.isEmpty()) {
+            ctx.emit(CellEvent.Kind.REASSIGNING, role + " (scheme " + scheme + "): no vacant seat");
+            return;
+        }
+        MissionRole wanted = ctx.slots().role(role);
+        long now = ctx.clock().nowMillis();
+        Optional<String> free = st.heard.entrySet().stream()
+                .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
+                .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
+                .filter(e -> wanted.requirement().isMetBy(e.getValue().summary()))
+                .map(Map.Entry::getKey).sorted().findFirst();
+        if (free.isPresent()) {
+            ctx.emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + ") to free vehicle " + free.get());
+            recruiter.requestFullCapability(free.get(), role);
+            return;
+        }
+        Optional<Child> movable = st.children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && c.description != null && wanted.requirement().isMetBy(c.description))
+                .filter(c -> c.seats.stream().allMatch(s -> !s.role().equals(role) && ctx.slots().compare(s, seat.get()) > 0))
+                .filter(c -> st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)))
+                .max(Comparator.comparing((Child c) -> c.seats.get(0), ctx.slots()::compare));
+        if (movable.isPresent()) {
+            Child c = movable.get();
+            ctx.emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + ") moves " + c.vehicle + " from "
+                    + c.seats);
+            recruiter.assign(c.vehicle, c.description, seat.get());
+            return;
+        }
+        ctx.emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + "): no vehicle free; the team contracts");
+        fillSecondarySeats();
+    }
+
+    /** Vacant seats of secondary roles go to the vehicle holding their primary seat, if it may take them. */
+    private void fillSecondarySeats() {
+        for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
+            Seat seat = e.getKey();
+            Owned o = e.getValue();
+            if (o.holder != null || o.pendingFor != null) {
+                continue;
+            }
+            Optional<Seat> hostSeat = ctx.slots().host(seat);
+            if (hostSeat.isEmpty()) {
+                continue;
+            }
+            if (st.seats.contains(hostSeat.get()) && !st.suspended()) {
+                hostLocally(seat, o);
+                continue;
+            }
+            // The seat's own host, else (when this cell owns the primary's seats too, as the
+            // centralised commander does) any holder of the primary role that may take it.
+            List<Seat> hosts = new ArrayList<>(List.of(hostSeat.get()));
+            st.owned.keySet().stream().filter(h -> h.role().equals(hostSeat.get().role()) && !h.equals(hostSeat.get()))
+                    .forEach(hosts::add);
+            for (Seat h : hosts) {
+                Owned ho = st.owned.get(h);
+                Child c = ho == null || ho.holder == null ? null : st.children.get(ho.holder);
+                if (c != null && c.description != null && ctx.canAlsoHold(c.seats, seat)
+                        && st.owned.values().stream().noneMatch(x -> c.vehicle.equals(x.pendingFor))
+                        && ctx.slots().role(seat.role()).requirement().isMetBy(c.description)) {
+                    recruiter.assign(c.vehicle, c.description, seat);
+                    break;
+                }
+            }
+        }
+    }
+
+    /**
+     * A vacant seat no free vehicle can take goes to a child whose seats all come later in the
+     * mission's order (a vehicle moved from a lower-priority role, as re-assignment does after a
+     * failure): the surveyor's seat before the relay's.
+     */
+    private boolean promoteChild(Seat open) {
+        MissionRole wanted = ctx.slots().role(open.role());
+        Optional<Child> movable = st.children.values().stream()
+                .filter(c -> !c.seats.isEmpty() && c.description != null && wanted.requirement().isMetBy(c.description))
+                .filter(c -> c.seats.stream().allMatch(s -> ctx.slots().rank(s.role()) > ctx.slots().rank(open.role())))
+                .filter(c -> st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)))
+                .max(Comparator.comparing((Child c) -> c.seats.get(0), ctx.slots()::compare));
+        if (movable.isEmpty()) {
+            return false;
+        }
+        ctx.emit(CellEvent.Kind.REASSIGNING, open + ": moves " + movable.get().vehicle + " up from " + movable.get().seats);
+        recruiter.assign(movable.get().vehicle, movable.get().description, open);
+        return true;
+    }
+
+    /**
+     * A local improvement towards the reasonably-optimal configuration: an open seat (vacant, or
+     * hosted) that no free vehicle heard of can take goes to a child holding a seat of another role
+     * that a free vehicle can take; that seat is then refilled through discovery. So a surveyor-like
+     * vehicle detecting hazards becomes the relay, and the free detector the detector.
+     */
+    private void swapTowardsOptimal(long now) {
+        for (Seat open : st.owned.keySet().stream().filter(st::open).sorted(ctx.slots()::compare).toList()) {
+            MissionRole wanted = ctx.slots().role(open.role());
+            List<CapabilitySummary> free = st.heard.entrySet().stream()
+                    .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
+                    .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
+                    .map(e -> e.getValue().summary()).toList();
+            if (free.stream().anyMatch(f -> wanted.requirement().isMetBy(f))) {
+                continue; // discovery will fill it directly
+            }
+            if (st.owned.get(open).holder == null && promoteChild(open)) {
+                return;
+            }
+            if (free.isEmpty()) {
+                continue; // nobody to swap with
+            }
+            for (Child c : st.children.values()) {
+                if (c.seats.size() != 1 || c.description == null || !wanted.requirement().isMetBy(c.description)
+                        || st.owned.values().stream().anyMatch(x -> c.vehicle.equals(x.pendingFor))) {
+                    continue;
+                }
+                Seat held = c.seats.get(0);
+                if (held.role().equals(open.role()) || ctx.canAlsoHold(List.of(held), open)
+                        || ctx.slots().compare(held, open) < 0 && !ctx.slots().minimal(open)) {
+                    continue;
+                }
+                MissionRole current = ctx.slots().role(held.role());
+                if (free.stream().anyMatch(f -> current.requirement().isMetBy(f))) {
+                    ctx.emit(CellEvent.Kind.REASSIGNING, open + ": moves " + c.vehicle + " from " + held
+                            + ", which a free vehicle can take");
+                    recruiter.giveSeat(c.vehicle, c.description, open);
+                    return;
+                }
+            }
+        }
+    }
+
+    private void hostLocally(Seat seat, Owned o) {
+        if (!ctx.canAlsoHold(st.seats, seat) || !ctx.slots().role(seat.role()).requirement().isMetBy(ctx.description())) {
+            return;
+        }
+        if (!ctx.policiesHeld(seat.role())) {
+            requestMissingPolicies(seat.role());
+            return;
+        }
+        try {
+            ctx.host().loadRole(seat.role(), ctx.store());
+        } catch (RoleLoadException ex) {
+            ctx.emit(CellEvent.Kind.REJECTED, "cannot host " + seat + ": " + ex.getMessage());
+            return;
+        }
+        st.seats.add(seat);
+        o.holder = ctx.self();
+        seating.recomputeOwnership();
+        ctx.emit(CellEvent.Kind.HOSTING, seat + " beside " + st.seats.get(0));
+        counts.updateMissionState();
+    }
+
+    /** Asks the parent (or, for a repository holder, the local repository) for a role's missing files. */
+    private void requestMissingPolicies(String role) {
+        for (String uri : ctx.subtreePolicyUris(role)) {
+            if (ctx.store().get(uri, PolicyStore.ANY_VERSION).isPresent()) {
+                continue;
+            }
+            if ((st.acting || st.backupRank >= 0) && ctx.fromRepository(uri).isPresent()) {
+                continue;
+            }
+            if (st.parent != null) {
+                ctx.send(st.parent.address(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
+    }
+}

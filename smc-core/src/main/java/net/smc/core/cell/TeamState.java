@@ -1,0 +1,153 @@
+package net.smc.core.cell;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+
+import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.message.Identity;
+import net.smc.core.message.RoleAssignment;
+import net.smc.core.message.Roster;
+import net.smc.core.transport.Address;
+
+/**
+ * The mutable state the parts of the team protocols share: where this cell stands in the tree (its
+ * seats, parent, lease, commander and epoch), and as a manager the seats it owns and the children
+ * holding them. Each part reads it; each field says which parts write it. Only the cell's thread
+ * touches it.
+ */
+final class TeamState {
+    private final TeamContext ctx;
+
+    // Where this cell stands (written by Assignee, Membership, BackupCommander, Merge, Seating).
+    boolean acting;
+    long epoch;
+    String commander;
+    Parent parent;
+    /** The lease from the parent runs until then: the send time of the latest echoed heartbeat + the lease. */
+    long leaseUntilMillis;
+    /** Whether the SUSPENDED event for the current lapse was emitted. */
+    boolean lapseNoted;
+    /** When the parent was last heard (its latest status). */
+    long lastStatusMillis;
+    boolean left;
+    final List<Seat> seats = new ArrayList<>();
+    Identity identity;
+    /** The role assignment this cell is taking (waiting for its policies), or null. */
+    Incoming incoming;
+    /** This cell's ancestors as its parent last told them: the parent first, the commander last. */
+    List<String> ancestors = List.of();
+    List<Object> handedOver = List.of();
+    List<Object> reportedState = List.of();
+    int teamSize;
+    long ticks;
+
+    // As a manager (written by Recruiter, Supervisor, Reports, Seating).
+    final Map<Seat, Owned> owned = new TreeMap<>();
+    final Map<String, Child> children = new TreeMap<>();
+    final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
+    final Map<String, Heard> heard = new HashMap<>();
+    final Map<String, List<Object>> handover = new HashMap<>();
+    /**
+     * Former children and assignees that may still name this cell as their parent (a Leave can be
+     * lost), until their lease would have run out: taking a role from one of them could close a
+     * cycle in the parent relation.
+     */
+    final Map<String, Long> abandoned = new HashMap<>();
+    MissionState missionState;
+    /** Whether the last tick found an open seat (a DISCOVERING event marks each start). */
+    boolean discovering;
+
+    // As a backup commander (written by BackupCommander, Membership, Seating).
+    Roster roster;
+    int backupRank = -1;
+
+    record Parent(String vehicle, Address address) {
+    }
+
+    record Incoming(String from, Address address, long envelopeId, RoleAssignment assignment, long sinceMillis) {
+    }
+
+    record Heard(CapabilitySummary summary, long atMillis) {
+    }
+
+    static final class PendingCapability {
+        final Set<String> roles = new LinkedHashSet<>();
+        final long sinceMillis;
+
+        PendingCapability(long sinceMillis) {
+            this.sinceMillis = sinceMillis;
+        }
+    }
+
+    /** One seat this cell owns: who holds it, or who is being given it. */
+    static final class Owned {
+        String holder;
+        String pendingFor;
+        long pendingSince;
+    }
+
+    static final class Child {
+        final String vehicle;
+        Address address;
+        long lastHeard;
+        List<Seat> seats = List.of();
+        CapabilityDescription description;
+        List<Object> state = List.of();
+        Map<String, Integer> subtree;
+        int size = 1;
+        int hosted;
+        /** Envelope id of the latest heartbeat heard from it, echoed in every status. */
+        long lastHeartbeat;
+        /**
+         * Whether its last report agreed with this cell's table. Its lease is renewed (its heartbeats
+         * echoed) only then, so a child that claims a seat given to another stops counting until it
+         * has given that seat back.
+         */
+        boolean consistent = true;
+        /** Envelope id of the child's message that confirmed each seat (its ids only grow). */
+        final Map<Seat, Long> confirmedBy = new HashMap<>();
+
+        Child(String vehicle) {
+            this.vehicle = vehicle;
+        }
+    }
+
+    TeamState(TeamContext ctx) {
+        this.ctx = ctx;
+    }
+
+    /** Free: no parent, no role, not commanding, not taking a role. */
+    boolean free() {
+        return parent == null && !acting && seats.isEmpty() && incoming == null;
+    }
+
+    /** Whether the lease from the parent has run out: this cell's seats do not count until renewed. */
+    boolean suspended() {
+        return parent != null && !acting && ctx.clock().nowMillis() > leaseUntilMillis;
+    }
+
+    /** Whether the holder of a secondary seat holds it beside its own primary role. */
+    boolean hosted(Seat seat, String holder) {
+        if (!ctx.slots().role(seat.role()).isSecondary()) {
+            return false;
+        }
+        List<Seat> held = holder.equals(ctx.self()) ? seats : children.containsKey(holder) ? children.get(holder).seats : List.of();
+        return held.stream().anyMatch(s -> !ctx.slots().role(s.role()).isSecondary());
+    }
+
+    /** Whether a seat could go to a newly found vehicle: vacant, or only hosted, and nobody is being given it. */
+    boolean open(Seat seat) {
+        Owned o = owned.get(seat);
+        return o != null && o.pendingFor == null && (o.holder == null || hosted(seat, o.holder));
+    }
+
+    boolean hasVacancy() {
+        return owned.keySet().stream().anyMatch(this::open);
+    }
+}

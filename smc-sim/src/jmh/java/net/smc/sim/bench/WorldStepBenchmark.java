@@ -1,0 +1,90 @@
+package net.smc.sim.bench;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+
+import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.robot.KoalaSpec;
+import net.smc.sim.robot.SimRobot;
+import net.smc.sim.world.Arena;
+import net.smc.sim.world.ArenaReader;
+import net.smc.sim.world.SimWorld;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+
+/**
+ * One 20 ms world step, run by the scheduler, with every robot's control loop reading all of its
+ * sensors (16 infrared rays, the camera, the chemical sensor, the radio's neighbour table) and
+ * wandering. Throughput in steps per second times 0.02 is simulated seconds per wall second:
+ * {@code rescue} has the paper's 3 robots, {@code house} 50 robots in the house arena.
+ *
+ * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-f 1 -wi 2 -i 3 -w 1s -r 1s WorldStepBenchmark'</pre>
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.Throughput)
+@OutputTimeUnit(TimeUnit.SECONDS)
+public class WorldStepBenchmark {
+    @Param({"rescue", "house"})
+    public String arena;
+
+    private SimulationScheduler scheduler;
+    private SimWorld world;
+    private double sink;
+
+    @Setup(Level.Trial)
+    public void setUp() throws Exception {
+        Path dir = Path.of("missions/worlds");
+        if (!Files.isDirectory(dir)) {
+            dir = Path.of("../missions/worlds");
+        }
+        Arena a = ArenaReader.read(dir.resolve(arena + ".xml"));
+        scheduler = new SimulationScheduler();
+        world = SimWorld.builder(a, scheduler).seed(17).build();
+        if (arena.equals("rescue")) {
+            for (String id : new String[] {"r1", "r2", "r3"}) {
+                wander(world.addRobot(id, id));
+            }
+        } else {
+            // 50 robots on a 0.6 m grid in the lobby (x 0-4), clear of its pillar at (2, 10)
+            int n = 0;
+            for (int row = 0; row < 22 && n < 50; row++) {
+                for (int col = 0; col < 6 && n < 50; col++) {
+                    double x = 0.5 + 0.6 * col;
+                    double y = 0.5 + 0.6 * row;
+                    if (Math.hypot(x - 2, y - 10) > 0.8) {
+                        wander(world.addRobot("r" + n++, new Arena.Start("g", x, y, 0), KoalaSpec.koala()));
+                    }
+                }
+            }
+        }
+        world.start();
+        scheduler.runFor(1_000);
+    }
+
+    private void wander(SimRobot robot) {
+        robot.control(robot, (time, dt) -> {
+            double[] ir = robot.proximity().read();
+            double left = ir[0] + ir[1] + ir[2] + ir[3];
+            double right = ir[12] + ir[13] + ir[14] + ir[15];
+            sink += robot.camera().look().size() + robot.chemical().sense().size()
+                    + robot.radio().neighbours().size() + robot.odometry().pose().x() + robot.battery().level();
+            double turn = (left - right) * 1.5;
+            double ahead = Math.min(ir[0], ir[15]) < 0.1 ? -0.1 : 0.4;
+            robot.drive().setWheelSpeeds(ahead - turn, ahead + turn);
+        });
+    }
+
+    @Benchmark
+    public double step() {
+        scheduler.runFor(world.stepMillis());
+        return sink;
+    }
+}

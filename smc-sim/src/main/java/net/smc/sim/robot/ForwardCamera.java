@@ -1,0 +1,87 @@
+package net.smc.sim.robot;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+
+import net.smc.sim.hardware.Camera;
+import net.smc.sim.hardware.Pose;
+import net.smc.sim.hardware.Sighting;
+import net.smc.sim.world.Arena;
+import net.smc.sim.world.SimWorld;
+
+/**
+ * A camera at the front of the body, looking along the heading: it reports the tagged things
+ * (targets such as the soldier, hazards, open doors, other robots) whose centre lies within its
+ * range and field of view and in its line of sight (walls, closed doors and obstacles occlude;
+ * robots, hazards and targets do not), with seeded noise on bearing and distance.
+ */
+final class ForwardCamera implements Camera {
+    private final SimRobot robot;
+
+    ForwardCamera(SimRobot robot) {
+        this.robot = robot;
+    }
+
+    @Override
+    public double fieldOfView() {
+        return robot.spec().cameraFov();
+    }
+
+    @Override
+    public double range() {
+        return robot.spec().cameraRange();
+    }
+
+    @Override
+    public List<Sighting> look() {
+        SimWorld world = robot.world();
+        Arena arena = world.arena();
+        Pose p = robot.pose();
+        double cx = p.x() + robot.spec().length() / 2 * Math.cos(p.heading());
+        double cy = p.y() + robot.spec().length() / 2 * Math.sin(p.heading());
+        List<Sighting> seen = new ArrayList<>();
+        int candidate = 0;
+        for (Arena.Target t : arena.targets()) {
+            consider(seen, candidate++, cx, cy, p.heading(), t.id(), t.kind(), t.x(), t.y());
+        }
+        for (Arena.Hazard h : arena.hazards()) {
+            consider(seen, candidate++, cx, cy, p.heading(), "hazard:" + h.id(), "hazard", h.x(), h.y());
+        }
+        for (Arena.Door d : arena.doors()) {
+            if (d.open()) {
+                consider(seen, candidate, cx, cy, p.heading(), "door:" + d.id(), "marker", (d.x1() + d.x2()) / 2,
+                        (d.y1() + d.y2()) / 2);
+            }
+            candidate++;
+        }
+        for (SimRobot other : world.robots()) {
+            if (other != robot) {
+                consider(seen, candidate, cx, cy, p.heading(), other.id(), "robot", other.x(), other.y());
+            }
+            candidate++;
+        }
+        seen.sort(Comparator.comparingDouble(Sighting::distance).thenComparing(Sighting::tag));
+        return seen;
+    }
+
+    private void consider(List<Sighting> seen, int candidate, double cx, double cy, double heading, String tag,
+                          String kind, double x, double y) {
+        KoalaSpec spec = robot.spec();
+        double distance = Math.hypot(x - cx, y - cy);
+        if (distance > spec.cameraRange()) {
+            return;
+        }
+        double bearing = Math.IEEEremainder(Math.atan2(y - cy, x - cx) - heading, 2 * Math.PI);
+        if (Math.abs(bearing) > spec.cameraFov() / 2 || !robot.world().clearLine(cx, cy, x, y)) {
+            return;
+        }
+        long step = robot.world().steps();
+        int channel = SimRobot.Channels.CAMERA + 2 * candidate;
+        double noisyDistance = distance + spec.cameraNoise()
+                * robot.world().noise().gaussian(robot.stream(), step, channel);
+        double noisyBearing = bearing + spec.cameraNoise() / 10
+                * robot.world().noise().gaussian(robot.stream(), step, channel + 1);
+        seen.add(new Sighting(tag, kind, noisyBearing, Math.max(0, noisyDistance)));
+    }
+}

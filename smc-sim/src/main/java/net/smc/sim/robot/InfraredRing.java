@@ -1,0 +1,66 @@
+package net.smc.sim.robot;
+
+import net.smc.sim.hardware.Pose;
+import net.smc.sim.hardware.ProximitySensors;
+
+/**
+ * Sixteen infrared proximity sensors on the body's edge, each a ray cast through the world: the
+ * distance from the edge to the first body (wall, obstacle, robot, hazard, soldier) within range,
+ * plus seeded Gaussian noise, clamped to [0, range].
+ */
+final class InfraredRing implements ProximitySensors {
+    /** Rays start this far inside the body, so that a sensor pressed against a wall still sees it. */
+    private static final double INSET = 0.02;
+    private final SimRobot robot;
+    private final double[] edge;   // distance from the centre to the body's edge along each sensor
+
+    InfraredRing(SimRobot robot) {
+        this.robot = robot;
+        KoalaSpec spec = robot.spec();
+        edge = new double[spec.irCount()];
+        for (int i = 0; i < edge.length; i++) {
+            double a = spec.irAngle(i);
+            double c = Math.abs(Math.cos(a));
+            double s = Math.abs(Math.sin(a));
+            edge[i] = Math.min(c == 0 ? Double.MAX_VALUE : spec.length() / 2 / c, s == 0 ? Double.MAX_VALUE : spec.width() / 2 / s);
+        }
+    }
+
+    @Override
+    public int count() {
+        return edge.length;
+    }
+
+    @Override
+    public double angle(int i) {
+        return robot.spec().irAngle(i);
+    }
+
+    @Override
+    public double range() {
+        return robot.spec().irRange();
+    }
+
+    @Override
+    public double[] read() {
+        KoalaSpec spec = robot.spec();
+        Pose p = robot.pose();
+        double range = spec.irRange();
+        double[] out = new double[edge.length];
+        long step = robot.world().steps();
+        for (int i = 0; i < edge.length; i++) {
+            double direction = p.heading() + spec.irAngle(i);
+            double from = edge[i] - INSET;
+            double hit = robot.world().castRay(p.x() + from * Math.cos(direction), p.y() + from * Math.sin(direction),
+                    direction, range + INSET, robot.body());
+            if (Double.isInfinite(hit)) {
+                out[i] = range;
+            } else {
+                double noisy = hit - INSET + spec.irNoise()
+                        * robot.world().noise().gaussian(robot.stream(), step, SimRobot.Channels.INFRARED + i);
+                out[i] = Math.max(0, Math.min(range, noisy));
+            }
+        }
+        return out;
+    }
+}

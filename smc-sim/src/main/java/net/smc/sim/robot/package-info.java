@@ -1,0 +1,7 @@
+/**
+ * Simulated Koala-like robots ({@link net.smc.sim.robot.SimRobot}, built to a
+ * {@link net.smc.sim.robot.KoalaSpec}): the {@link net.smc.sim.hardware.RobotHardware} of a robot
+ * in a {@link net.smc.sim.world.SimWorld}, with a differential drive, wheel odometry, 16 infrared
+ * sensors, a forward camera, a chemical sensor, a battery and a radio.
+ */
+package net.smc.sim.robot;

@@ -1,0 +1,346 @@
+package net.smc.sim.world;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.TreeMap;
+
+import net.smc.core.transport.Cancellable;
+import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.radio.RadioSettings;
+import net.smc.sim.radio.WorldRadio;
+import net.smc.sim.robot.KoalaSpec;
+import net.smc.sim.robot.SimRobot;
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.dynamics.ContinuousDetectionMode;
+import org.dyn4j.geometry.Convex;
+import org.dyn4j.geometry.Geometry;
+import org.dyn4j.geometry.MassType;
+import org.dyn4j.geometry.Ray;
+import org.dyn4j.geometry.Vector2;
+import org.dyn4j.world.DetectFilter;
+import org.dyn4j.world.World;
+import org.dyn4j.world.result.RaycastResult;
+
+/**
+ * The simulated 2-D world: an {@link Arena} built as a dyn4j {@link World}, its Koala-like robots,
+ * and the radio between them, stepped at a fixed period by the simulation's
+ * {@link SimulationScheduler}, the same virtual clock that drives the cells and the in-memory
+ * network. One seed replays a whole run, positions included; nothing reads the wall clock.
+ *
+ * <pre>{@code
+ * SimulationScheduler scheduler = new SimulationScheduler();
+ * SimWorld world = SimWorld.builder(ArenaReader.read(Path.of("missions/worlds/rescue.xml")), scheduler)
+ *         .seed(7).build();
+ * SimRobot surveyor = world.addRobot("s1", "s1");               // at the start position "s1"
+ * surveyor.control(this, (time, dt) -> surveyor.drive().setWheelSpeeds(0.3, 0.3));
+ * world.start();
+ * scheduler.runFor(10_000);                                     // ten seconds of mission time
+ * }</pre>
+ *
+ * <p>Each step: every robot's control loops run (robots in the order they were added), the drives
+ * turn the wheels' ramped speeds into body velocities, the physics moves every body and resolves
+ * collisions, then odometry, batteries and hazards are updated and {@link WorldStepListener}s told.
+ * Single-threaded, like the scheduler.
+ */
+public final class SimWorld {
+    private final Arena arena;
+    private final SimulationScheduler scheduler;
+    private final int stepMillis;
+    private final double dt;
+    private final Noise noise;
+    private final KoalaSpec defaultSpec;
+    private final World<Body> physics = new World<>();
+    private final Map<String, SimRobot> robots = new TreeMap<>();
+    private final List<SimRobot> order = new ArrayList<>();
+    private final List<WorldStepListener> listeners = new ArrayList<>();
+    private final WorldRadio radio;
+    private final StaticShapes shapes;
+    private long steps;
+    private Cancellable ticking;
+
+    private SimWorld(Builder b) {
+        arena = b.arena;
+        scheduler = b.scheduler;
+        stepMillis = b.stepMillis;
+        dt = stepMillis / 1000.0;
+        noise = new Noise(b.seed);
+        defaultSpec = b.spec;
+        physics.setGravity(0, 0);
+        physics.getSettings().setStepFrequency(dt);
+        physics.getSettings().setAtRestDetectionEnabled(false);
+        // A Koala moves at most 12 mm per 20 ms step, far less than any wall's thickness: no tunnelling
+        // to guard against, and continuous detection is most of a crowded step's cost.
+        physics.getSettings().setContinuousDetectionMode(ContinuousDetectionMode.NONE);
+        ArenaBodies.build(arena, physics);
+        shapes = new StaticShapes(arena);
+        radio = new WorldRadio(this, b.radio, b.seed);
+    }
+
+    /** A builder for a world of {@code arena} stepped by {@code scheduler}. */
+    public static Builder builder(Arena arena, SimulationScheduler scheduler) {
+        return new Builder(arena, scheduler);
+    }
+
+    /** Puts a robot with the default spec at the arena's start position {@code startId}. */
+    public SimRobot addRobot(String id, String startId) {
+        Arena.Start start = arena.start(startId).orElseThrow(() -> new IllegalArgumentException(
+                "arena '" + arena.name() + "' has no start '" + startId + "'; its starts are "
+                        + arena.starts().stream().map(Arena.Start::id).toList()));
+        return addRobot(id, start, defaultSpec);
+    }
+
+    /** Puts a robot built to {@code spec} at {@code start}. */
+    public SimRobot addRobot(String id, Arena.Start start, KoalaSpec spec) {
+        Objects.requireNonNull(id, "id");
+        if (robots.containsKey(id) || arena.stations().stream().anyMatch(s -> s.id().equals(id))) {
+            throw new IllegalArgumentException("a robot or station called '" + id + "' is in the world already; ids must be unique");
+        }
+        SimRobot robot = new SimRobot(this, id, order.size(), spec, start);
+        physics.addBody(robot.body());
+        robots.put(id, robot);
+        order.add(robot);
+        return robot;
+    }
+
+    /** Starts stepping every {@link #stepMillis()} on the scheduler. */
+    public void start() {
+        if (ticking == null) {
+            ticking = scheduler.schedule(stepMillis, this::tick);
+        }
+    }
+
+    /** Stops stepping; {@link #start()} resumes. */
+    public void stop() {
+        if (ticking != null) {
+            ticking.cancel();
+            ticking = null;
+        }
+    }
+
+    private void tick() {
+        ticking = scheduler.schedule(stepMillis, this::tick);
+        step();
+    }
+
+    /** Runs one step now (the scheduler calls this when started; tests may call it directly). */
+    public void step() {
+        steps++;
+        double time = time();
+        for (SimRobot robot : order) {
+            robot.runControl(time, dt);
+        }
+        for (SimRobot robot : order) {
+            robot.applyDrive(dt);
+        }
+        physics.step(1);
+        for (SimRobot robot : order) {
+            String cause = robot.afterStep(dt);
+            if (cause != null) {
+                for (WorldStepListener listener : listeners) {
+                    listener.disabled(this, robot, cause);
+                }
+            }
+        }
+        for (WorldStepListener listener : listeners) {
+            listener.stepped(this);
+        }
+    }
+
+    public void addListener(WorldStepListener listener) {
+        listeners.add(Objects.requireNonNull(listener, "listener"));
+    }
+
+    public boolean removeListener(WorldStepListener listener) {
+        return listeners.remove(listener);
+    }
+
+    public Arena arena() {
+        return arena;
+    }
+
+    /** The mission time, seconds: the scheduler's clock. */
+    public double time() {
+        return scheduler.nowMillis() / 1000.0;
+    }
+
+    /** How many steps ran. */
+    public long steps() {
+        return steps;
+    }
+
+    /** The step period, ms. */
+    public int stepMillis() {
+        return stepMillis;
+    }
+
+    public Noise noise() {
+        return noise;
+    }
+
+    /** The robots, in the order they were added. */
+    public List<SimRobot> robots() {
+        return Collections.unmodifiableList(order);
+    }
+
+    /** The robot called {@code id}, or {@code null}. */
+    public SimRobot robot(String id) {
+        return robots.get(id);
+    }
+
+    /** The radio between the robots and the arena's stations; a {@code RadioModel} for the network. */
+    public WorldRadio radio() {
+        return radio;
+    }
+
+    /** The physics world, for sensors and renderers; do not step it or add bodies to it. */
+    public World<Body> physics() {
+        return physics;
+    }
+
+    /**
+     * The distance along a ray from (x, y) in direction {@code angle} to the first body other than
+     * {@code self}, or {@code Double.POSITIVE_INFINITY} when nothing lies within {@code maxLength}.
+     */
+    public double castRay(double x, double y, double angle, double maxLength, Body self) {
+        RaycastResult<Body, BodyFixture> hit = physics.raycastClosest(new Ray(new Vector2(x, y), angle), maxLength,
+                new Only(self));
+        return hit == null ? Double.POSITIVE_INFINITY : hit.getRaycast().getDistance();
+    }
+
+    /** Whether nothing that occludes (walls, closed doors, obstacles) lies between the two points. */
+    public boolean clearLine(double ax, double ay, double bx, double by) {
+        return shapes.clear(ax, ay, bx, by);
+    }
+
+    /** How many walls and closed doors (the fence included) the straight line between the two points crosses. */
+    public int wallsBetween(double ax, double ay, double bx, double by) {
+        return shapes.wallsCrossed(ax, ay, bx, by);
+    }
+
+    /** Lets a ray hit every enabled, non-sensor body but {@code self}. */
+    private static final class Only extends DetectFilter<Body, BodyFixture> {
+        private final Body self;
+
+        Only(Body self) {
+            super(true, true, null);
+            this.self = self;
+        }
+
+        @Override
+        public boolean isAllowed(Body body, BodyFixture fixture) {
+            return body != self && super.isAllowed(body, fixture);
+        }
+    }
+
+    /** The bodies of the arena (walls, doors, obstacles, hazards, targets), built once. */
+    static final class ArenaBodies {
+        private static final double FENCE = 0.2;
+
+        private ArenaBodies() {
+        }
+
+        static void build(Arena arena, World<Body> physics) {
+            double w = arena.width();
+            double h = arena.height();
+            add(physics, Thing.Kind.WALL, "fence", Geometry.createRectangle(w + 2 * FENCE, FENCE), w / 2, -FENCE / 2, 0);
+            add(physics, Thing.Kind.WALL, "fence", Geometry.createRectangle(w + 2 * FENCE, FENCE), w / 2, h + FENCE / 2, 0);
+            add(physics, Thing.Kind.WALL, "fence", Geometry.createRectangle(FENCE, h), -FENCE / 2, h / 2, 0);
+            add(physics, Thing.Kind.WALL, "fence", Geometry.createRectangle(FENCE, h), w + FENCE / 2, h / 2, 0);
+            for (Arena.Wall wall : arena.walls()) {
+                segment(physics, Thing.Kind.WALL, "wall", wall.x1(), wall.y1(), wall.x2(), wall.y2(), wall.thickness());
+            }
+            for (Arena.Door door : arena.doors()) {
+                if (!door.open()) {
+                    segment(physics, Thing.Kind.DOOR, "door:" + door.id(), door.x1(), door.y1(), door.x2(), door.y2(),
+                            door.thickness());
+                }
+            }
+            for (Arena.Box box : arena.boxes()) {
+                add(physics, Thing.Kind.OBSTACLE, box.id(), Geometry.createRectangle(box.width(), box.height()),
+                        box.x(), box.y(), box.angle());
+            }
+            for (Arena.Cylinder c : arena.cylinders()) {
+                add(physics, Thing.Kind.OBSTACLE, c.id(), Geometry.createCircle(c.radius()), c.x(), c.y(), 0);
+            }
+            for (Arena.Hazard hazard : arena.hazards()) {
+                if (hazard.radius() > 0) {
+                    add(physics, Thing.Kind.HAZARD, "hazard:" + hazard.id(), Geometry.createCircle(hazard.radius()),
+                            hazard.x(), hazard.y(), 0);
+                }
+            }
+            for (Arena.Target target : arena.targets()) {
+                add(physics, Thing.Kind.TARGET, target.id(), Geometry.createCircle(target.radius()),
+                        target.x(), target.y(), 0);
+            }
+        }
+
+        private static void segment(World<Body> physics, Thing.Kind kind, String tag, double x1, double y1,
+                                    double x2, double y2, double thickness) {
+            double length = Math.hypot(x2 - x1, y2 - y1) + thickness;   // square ends meet at corners
+            add(physics, kind, tag, Geometry.createRectangle(length, thickness), (x1 + x2) / 2, (y1 + y2) / 2,
+                    Math.atan2(y2 - y1, x2 - x1));
+        }
+
+        private static void add(World<Body> physics, Thing.Kind kind, String tag, Convex shape, double x, double y,
+                                double angle) {
+            Body body = new Body();
+            BodyFixture fixture = body.addFixture(shape);
+            fixture.setFriction(0.4);
+            fixture.setRestitution(0);
+            body.setMass(MassType.INFINITE);
+            body.rotateAboutCenter(angle);
+            body.translate(new Vector2(x, y));
+            body.setUserData(new Thing(kind, tag));
+            physics.addBody(body);
+        }
+    }
+
+    /** Builds a {@link SimWorld}. */
+    public static final class Builder {
+        private final Arena arena;
+        private final SimulationScheduler scheduler;
+        private long seed = 1;
+        private int stepMillis = 20;
+        private KoalaSpec spec = KoalaSpec.koala();
+        private RadioSettings radio = RadioSettings.defaults();
+
+        private Builder(Arena arena, SimulationScheduler scheduler) {
+            this.arena = Objects.requireNonNull(arena, "arena");
+            this.scheduler = Objects.requireNonNull(scheduler, "scheduler");
+        }
+
+        /** The seed of every random draw in the world (sensor noise, radio loss). Default 1. */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /** The step period, 1 to 1,000 ms. Default 20 ms. */
+        public Builder stepMillis(int stepMillis) {
+            if (stepMillis < 1 || stepMillis > 1_000) {
+                throw new IllegalArgumentException("step of " + stepMillis + " ms is out of range; it must be 1 to 1000 ms");
+            }
+            this.stepMillis = stepMillis;
+            return this;
+        }
+
+        /** The spec of robots added by start id alone. Default {@link KoalaSpec#koala()}. */
+        public Builder robotSpec(KoalaSpec spec) {
+            this.spec = Objects.requireNonNull(spec, "spec");
+            return this;
+        }
+
+        public Builder radio(RadioSettings radio) {
+            this.radio = Objects.requireNonNull(radio, "radio");
+            return this;
+        }
+
+        public SimWorld build() {
+            return new SimWorld(this);
+        }
+    }
+}
