@@ -102,6 +102,11 @@ final class NodeCommand implements Callable<Integer> {
             description = "The vehicle's tasks, from Aggregator, Assist, Beacon, Explorer, HazardDetector, Navigator, Relay (default: none); each is advertised with its full capability description.")
     List<String> tasks = List.of();
 
+    @Option(names = "--allow-path", paramLabel = "DIR",
+            description = "Also allow the mission instance's <missionClass href> to name a file in DIR or below "
+                    + "(repeatable; by default only the instance's own folder and below).")
+    List<Path> allowPaths = new java.util.ArrayList<>();
+
     @Option(names = "--repository", paramLabel = "DIR",
             description = "The policy repository (default: the " + CellOptions.DEFAULT_REPOSITORY + "/ folder beside the "
                     + "mission file's folder, as missions/ and policies/ sit in the project; else the "
@@ -131,7 +136,7 @@ final class NodeCommand implements Callable<Integer> {
         PolicyRepository repo = repository();
         NodeFiles.Node node;
         try {
-            node = new NodeFiles(io.workingDir()).read(key, credential, authority, mission, repo, System.currentTimeMillis());
+            node = new NodeFiles(io.workingDir(), allowPaths).read(key, credential, authority, mission, repo, System.currentTimeMillis());
         } catch (NodeFiles.Refused e) {
             e.details().forEach(io.stderr()::println);
             io.stderr().println("smc node: " + e.getMessage());

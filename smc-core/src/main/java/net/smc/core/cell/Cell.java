@@ -80,6 +80,7 @@ public final class Cell {
         Consumer<String> output = b.output;
         this.engine = net.smc.policy.PolicyEngine.builder()
                 .clock(b.clock::nowMillis)
+                .scheduler((delay, task) -> b.scheduler.schedule(delay, task)::cancel)   // timers in the cell's (virtual) time
                 .random(random.split())
                 .repository(b.repository)
                 .output(output)
