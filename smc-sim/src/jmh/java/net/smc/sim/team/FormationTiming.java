@@ -1,5 +1,6 @@
 package net.smc.sim.team;
 
+import net.smc.core.host.CellHost;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.DatagramSocket;
@@ -14,12 +15,12 @@ import java.util.OptionalDouble;
 import java.util.function.Predicate;
 
 import net.smc.core.cell.CellEvent;
-import net.smc.core.cell.CellHost;
+import net.smc.core.host.CellHost;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * How long the reconnaissance team takes to form and to recover from failures, under both schemes

@@ -18,7 +18,7 @@ import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionException;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.sim.LinkProfile;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.render.GifRecorder;
 import net.smc.sim.render.Mark;
 import net.smc.sim.render.RoleLabels;

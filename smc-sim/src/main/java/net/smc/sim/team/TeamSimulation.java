@@ -27,7 +27,7 @@ import net.smc.core.role.TaskProvider;
 import net.smc.core.security.Claims;
 import net.smc.core.security.Credential;
 import net.smc.core.security.IdealAuthentication;
-import net.smc.core.security.Identity;
+import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
 import net.smc.core.security.SigningKey;
@@ -37,8 +37,7 @@ import net.smc.core.transport.Transport;
 import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
-import net.smc.policy.PolicyRepository;
-import net.smc.policy.RunResult;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.task.TaskCatalog;
 import net.smc.sim.world.Arena;
 import net.smc.sim.world.SimWorld;
@@ -81,7 +80,7 @@ public final class TeamSimulation {
         NONE
     }
 
-    private static final Map<String, Identity> IDENTITIES = new ConcurrentHashMap<>();
+    private static final Map<String, SigningIdentity> IDENTITIES = new ConcurrentHashMap<>();
     private static final SigningKey AUTHORITY = key(1);
     private static final SigningKey FOREIGN_AUTHORITY = key(2);
 
@@ -98,7 +97,7 @@ public final class TeamSimulation {
     private final Deque<String> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
     private final Function<String, TaskProvider> tasks;
-    private final net.smc.policy.AuthMode auth;
+    private final net.smc.policy.api.AuthMode auth;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
     private final WorldTeam world;
@@ -213,10 +212,6 @@ public final class TeamSimulation {
         }
     }
 
-    /** Loads a repository file into a vehicle's running cell; errors name the file. */
-    RunResult load(Cell cell, String uri) {
-        return cell.engine().load(uri);
-    }
 
     /** Crashes a vehicle: its cell stops and its endpoint goes silent. */
     public void crash(String vehicle) {
@@ -424,11 +419,11 @@ public final class TeamSimulation {
      * authority (a foreign one for a rogue). Made once per vehicle id and JVM: Ed25519 is slow and
      * they change no outcome.
      */
-    public static Identity identity(SimVehicle v, String missionName) {
+    public static SigningIdentity identity(SimVehicle v, String missionName) {
         return IDENTITIES.computeIfAbsent((v.rogue() ? "rogue:" : "") + v.id() + "@" + missionName, k -> {
             SigningKey key = key(k.hashCode() * 7919L + 3);
             SigningKey issuer = v.rogue() ? FOREIGN_AUTHORITY : AUTHORITY;
-            return new Identity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
+            return new SigningIdentity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
                     Long.MAX_VALUE / 2), issuer));
         });
     }
@@ -470,7 +465,7 @@ public final class TeamSimulation {
         private TaskCatalog catalog = TaskCatalog.standard();
         private final Map<String, String> places = new LinkedHashMap<>();
         private final Map<String, List<String>> standalone = new LinkedHashMap<>();
-        private net.smc.policy.AuthMode auth = net.smc.policy.AuthMode.OFF;
+        private net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -572,7 +567,7 @@ public final class TeamSimulation {
         }
 
         /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
-        public Builder auth(net.smc.policy.AuthMode mode) {
+        public Builder auth(net.smc.policy.api.AuthMode mode) {
             this.auth = Objects.requireNonNull(mode, "auth");
             return this;
         }

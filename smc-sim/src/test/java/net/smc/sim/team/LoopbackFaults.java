@@ -1,5 +1,6 @@
 package net.smc.sim.team;
 
+import net.smc.core.host.CellHost;
 import java.util.Collection;
 import java.util.Map;
 import java.util.Set;
@@ -7,7 +8,7 @@ import java.util.SplittableRandom;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.UnaryOperator;
 
-import net.smc.core.cell.CellHost;
+import net.smc.core.host.CellHost;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.ForwardingTransport;
 import net.smc.core.transport.Receiver;

@@ -1,5 +1,6 @@
 package net.smc.sim.team;
 
+import net.smc.core.host.CellHost;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.DynamicTest.dynamicTest;
@@ -22,7 +23,7 @@ import java.util.function.Predicate;
 import java.util.stream.Stream;
 
 import net.smc.core.cell.Cell;
-import net.smc.core.cell.CellHost;
+import net.smc.core.host.CellHost;
 import net.smc.core.cell.CellView;
 import net.smc.core.cell.MissionState;
 import net.smc.core.cell.Missions;

@@ -1,5 +1,6 @@
 package net.smc.sim.team;
 
+import net.smc.core.host.CellHost;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.IOException;
@@ -22,7 +23,7 @@ import java.util.function.Predicate;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
-import net.smc.core.cell.CellHost;
+import net.smc.core.host.CellHost;
 import net.smc.core.cell.CellView;
 import net.smc.core.cell.Missions;
 import net.smc.core.mission.Mission;
