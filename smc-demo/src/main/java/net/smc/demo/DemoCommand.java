@@ -116,6 +116,7 @@ final class DemoCommand implements Callable<Integer> {
         rescue.timeline().writeCsv(dir.resolve("rescue-timeline.csv"));
         io.stdout().println(String.format(Locale.ROOT, "%.1f s of mission time in %.1f s (%.1fx real time); files in %s",
                 outcome.missionMillis() / 1000.0, wallSeconds, outcome.missionMillis() / 1000.0 / wallSeconds, dir));
+        rescue.diagnostics().forEach((vehicle, errors) -> errors.forEach(e -> io.stderr().println(vehicle + ": " + e)));
         if (outcome.succeeded()) {
             io.stdout().println("succeeded: " + outcome.reason());
             return 0;

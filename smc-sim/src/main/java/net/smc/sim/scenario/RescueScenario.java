@@ -18,6 +18,7 @@ import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionException;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.sim.LinkProfile;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.render.GifRecorder;
 import net.smc.sim.render.Mark;
@@ -41,7 +42,7 @@ import net.smc.sim.world.WorldStepListener;
  * The rescue of a wounded soldier (the paper's section IV-C, Fig. 7) run by cells and policies:
  * the commander's laptop ({@code cdr}) and the soldier's wearable computer ({@code wearable}) at
  * their stations, two robots ({@code r1}, {@code r2}) at their starts, on the world's radio,
- * with authenticated traffic. The scenario only wounds the soldier (step (i)); the wearable's
+ * with authenticated traffic and policies checked against a default of deny, as deployed. The scenario only wounds the soldier (step (i)); the wearable's
  * policy calls for help (ii), Table I assembles the team (iii), the surveyor's policy drives it
  * to the soldier until the hazard stops it (iv), Table II re-assigns its role on the failure
  * timeout with its last position (v), the new surveyor's policy avoids that zone (vi) and
@@ -148,7 +149,7 @@ public final class RescueScenario {
                 new SimVehicle("r1", ROBOT_RESOURCES, ROBOT_TASKS, false, false),
                 new SimVehicle("r2", ROBOT_RESOURCES, ROBOT_TASKS, false, false));
         this.team = TeamSimulation.builder(mission, repository, settings.seed())
-                .vehicles(vehicles).security(settings.security())
+                .vehicles(vehicles).security(settings.security()).auth(AuthMode.DENY)
                 .link(LinkProfile.DEFAULT.withLatency(5, 10).withLoss(settings.loss()))
                 .world(arena).place("cdr", "cdr").place("wearable", "wearable").place("r1", "r1").place("r2", "r2")
                 .standalone("wearable", WEARABLE_POLICIES)
@@ -358,6 +359,9 @@ public final class RescueScenario {
         } else {
             step = "";
         }
+        if (firstStop >= 0 && vehicle.equals(firstSurveyor)) {
+            step = "";   // the stopped robot, cut off by its dead radio, acts on its own
+        }
         row(team.nowMillis(), vehicle, "POLICY", line, step);
     }
 
@@ -365,6 +369,18 @@ public final class RescueScenario {
         timeline.record(millis, vehicle, what, detail, step);
         List<Timeline.Row> rows = timeline.rows();
         printer.accept(rows.get(rows.size() - 1));
+    }
+
+    /** What each live cell's policies reported as errors (a policy denied, a failed send ...), by vehicle. */
+    public Map<String, List<String>> diagnostics() {
+        Map<String, List<String>> out = new LinkedHashMap<>();
+        for (SimVehicle v : team.vehicles()) {
+            Cell c = team.cell(v.id());
+            if (c != null && !c.diagnostics().isEmpty()) {
+                out.put(v.id(), c.diagnostics().stream().map(Object::toString).toList());
+            }
+        }
+        return out;
     }
 
     public Timeline timeline() {
