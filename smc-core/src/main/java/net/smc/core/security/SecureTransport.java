@@ -165,7 +165,9 @@ public final class SecureTransport implements AuthenticatingTransport {
             }
             receiver.onMessage(d.sender(), from, d.protection(), d.payload());
         } else if (result instanceof Unwrapped.Control c) {
-            learn(c.sender(), from);
+            if (c.event() != Unwrapped.ControlEvent.HANDSHAKE_OFFERED) {
+                learn(c.sender(), from);   // an offer may be a replay: it proves nothing about where its sender is now
+            }
             c.replyDatagram().ifPresent(reply -> inner.send(from, reply));
         } else if (result instanceof Unwrapped.Rejected r && r.reason() == Rejection.UNKNOWN_SENDER) {
             probe(r.claimedSender(), from);

@@ -148,7 +148,7 @@ class SecureTransportTest {
         }
         settle();
 
-        assertEquals(3, replays.size(), "discovery, the commander's handshake, the assignment");
+        assertEquals(4, replays.size(), "discovery, the commander's two handshake steps, the assignment");
         assertEquals(heardBefore, vehicle.heard, "a replay delivers nothing");
         assertEquals(refusedBefore + replays.size(), vehicle.counters().rejectedTotal());
         assertEquals(replays.size(), vehicle.counters().rejected(Rejection.REPLAY));
