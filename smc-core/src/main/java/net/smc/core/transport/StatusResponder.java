@@ -107,6 +107,11 @@ public final class StatusResponder extends ForwardingTransport {
         inner.setReceiver(this::onDatagram);
     }
 
+    /** Whether {@code datagram} starts as a status query does: for a transport that hands queries to the cell first. */
+    public static boolean looksLikeQuery(byte[] datagram) {
+        return startsWith(datagram, datagram.length, QUERY_MAGIC);
+    }
+
     /** The query datagram a client sends: magic and version. */
     public static byte[] query() {
         byte[] query = Arrays.copyOf(QUERY_MAGIC, HEADER_BYTES);
