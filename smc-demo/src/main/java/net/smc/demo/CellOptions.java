@@ -31,6 +31,9 @@ final class CellOptions {
                     + "(default: the " + DEFAULT_REPOSITORY + "/ folder of the current directory, if there is one).")
     Path repository;
 
+    /** The user's arguments ({@code root argsAsArray}): for {@code smc run}, those after {@code --}. */
+    List<String> userArguments = List.of();
+
     /** The policy repository to use, or {@code null} when there is none. */
     PolicyRepository repository(CommandSpec spec, Path workingDir) {
         if (repository == null) {
@@ -77,12 +80,21 @@ final class CellOptions {
     int withBootedCell(CommandSpec spec, Io io, List<Path> files, BootedWork work) throws Exception {
         List<Path> units = readableFiles(spec, io.workingDir(), files);
         PolicyRepository repo = repository(spec, io.workingDir());
-        return LargeStack.call(() -> {
-            CommandCell cell = new CommandCell(io, auth, repo);
-            cell.boot(units);
-            cell.cell().endBoot();
-            return work.run(cell);
-        });
+        try {
+            return LargeStack.call(() -> {
+                CommandCell cell = new CommandCell(io, auth, repo, userArguments);
+                cell.boot(units);
+                cell.cell().endBoot();
+                return work.run(cell);
+            });
+        } catch (OutOfMemoryError e) {
+            // The cell's thread has ended, so its objects are garbage by now and printing works.
+            io.stderr().println(spec.qualifiedName() + ": out of memory (the Java heap is at most "
+                    + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MB) while running " + files
+                    + "; give the JVM more with JAVA_OPTS=-Xmx..., or use smaller files");
+            io.stderr().flush();
+            return 1;
+        }
     }
 
     static final class AuthConverter implements ITypeConverter<AuthMode> {

@@ -20,7 +20,7 @@ final class CommandCell {
     private int diagnostics;
     private int failedUnits;
 
-    CommandCell(Io io, AuthMode auth, PolicyRepository repository) {
+    CommandCell(Io io, AuthMode auth, PolicyRepository repository, List<String> userArguments) {
         this.cell = Cell.builder()
                 .output(io.stdout()::println)
                 .errors(d -> {
@@ -31,6 +31,7 @@ final class CommandCell {
                 .clock(System::currentTimeMillis)
                 .random(new Random())
                 .repository(repository)
+                .arguments(userArguments)
                 .build();
     }
 
@@ -47,6 +48,21 @@ final class CommandCell {
             if (!result.ok()) {
                 failedUnits++;
             }
+        }
+    }
+
+    /**
+     * Runs the cell's timers on the system clock until none is pending (every ticker stopped or
+     * cancelled, every one-shot fired) or {@code root exit} ran: the process waits between them.
+     */
+    void runTimers() throws InterruptedException {
+        var timers = cell.timers();
+        while (cell.exitStatus().isEmpty() && timers.nextDue().isPresent()) {
+            long wait = timers.nextDue().getAsLong() - System.currentTimeMillis();
+            if (wait > 0) {
+                Thread.sleep(wait);
+            }
+            timers.runDue();
         }
     }
 

@@ -100,7 +100,7 @@ final class KeysCommand implements Callable<Integer> {
 
         @Override
         public Integer call() {
-            return keys.writeKeyPair(spec, out, "authority", "mission authority", force);
+            return keys.writeKeyPair(spec, out, "authority", KeyFiles.Use.AUTHORITY, "mission authority", force);
         }
     }
 
@@ -129,7 +129,7 @@ final class KeysCommand implements Callable<Integer> {
         @Override
         public Integer call() {
             checkId(spec, id);
-            return keys.writeKeyPair(spec, out, id, "vehicle " + id, force);
+            return keys.writeKeyPair(spec, out, id, KeyFiles.Use.VEHICLE, "vehicle " + id, force);
         }
     }
 
@@ -201,7 +201,7 @@ final class KeysCommand implements Callable<Integer> {
         }
     }
 
-    private int writeKeyPair(CommandSpec spec, Path dir, String name, String comment, boolean force) {
+    private int writeKeyPair(CommandSpec spec, Path dir, String name, KeyFiles.Use use, String comment, boolean force) {
         Path target = outputDirectory(spec, dir);
         Path keyFile = target.resolve(name + ".key");
         Path pubFile = target.resolve(name + ".pub");
@@ -211,7 +211,7 @@ final class KeysCommand implements Callable<Integer> {
         }
         SigningKey key = SigningKey.generate(random);
         try {
-            writePrivate(keyFile, KeyFiles.privateKeyText(key, comment), force);
+            writePrivate(keyFile, KeyFiles.privateKeyText(key, use, comment), force);
             write(pubFile, KeyFiles.publicKeyText(key.verificationKey(), comment), force);
         } catch (IOException e) {
             return failed(command, "cannot write: " + e);
@@ -242,7 +242,7 @@ final class KeysCommand implements Callable<Integer> {
             return failed(command, "cannot read: " + e);
         }
         try {
-            SigningKey authority = KeyFiles.readPrivateKey(inputs.get(0));
+            SigningKey authority = KeyFiles.readPrivateKey(inputs.get(0), KeyFiles.Use.AUTHORITY);
             Credential credential = Credential.issue(claims, authority);
             write(out, KeyFiles.credentialText(credential, "vehicle " + o.id + ", mission " + o.mission), o.force);
             io.stdout().println("wrote " + out + ": credential of '" + o.id + "' for mission '" + o.mission + "', valid from "
@@ -271,7 +271,11 @@ final class KeysCommand implements Callable<Integer> {
             io.stdout().println("file: " + file);
             io.stdout().println("kind: " + kind.description() + " (" + kind.header() + ")");
             switch (kind) {
-                case PRIVATE_KEY -> printKey("public key", KeyFiles.parsePrivateKey(text, file.toString()).verificationKey());
+                case PRIVATE_KEY -> {
+                    KeyFiles.checkPrivate(file);
+                    io.stdout().println("use: " + KeyFiles.useOf(text, file.toString()).word());
+                    printKey("public key", KeyFiles.parsePrivateKey(text, file.toString()).verificationKey());
+                }
                 case PUBLIC_KEY -> printKey("public key", KeyFiles.parsePublicKey(text, file.toString()));
                 case CREDENTIAL -> {
                     return showCredential(KeyFiles.parseCredential(text, file.toString()),

@@ -41,6 +41,7 @@ public final class Main implements Callable<Integer> {
     /** The {@code smc} command, whose {@code node} runs until a signal from {@code nodeStops} fires. */
     static CommandLine commandLine(Io io, Supplier<StopSignal> nodeStops) {
         CommandLine commandLine = new CommandLine(new Main())
+                .addSubcommand(new CommandLine(new ExperimentCommand()).addSubcommand(new SetupTimeCommand(io)))
                 .addSubcommand(new KeysCommand(io))
                 .addSubcommand(new NodeCommand(io, nodeStops))
                 .addSubcommand(new RunCommand(io))

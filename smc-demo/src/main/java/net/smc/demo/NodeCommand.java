@@ -3,6 +3,7 @@ package net.smc.demo;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.concurrent.Callable;
@@ -10,6 +11,7 @@ import java.util.function.Supplier;
 import java.util.regex.Pattern;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.TaskDescription;
+import net.smc.sim.task.TaskCatalog;
 import net.smc.core.cell.CellHost;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.udp.UdpSettings;
@@ -53,6 +55,8 @@ import picocli.CommandLine.Spec;
 final class NodeCommand implements Callable<Integer> {
     /** Resource and task names: what a capability description can carry, and free of separators. */
     static final Pattern NAME = Pattern.compile("[A-Za-z][A-Za-z0-9_.-]{0,63}");
+    /** The tasks a node may advertise with --tasks. */
+    static final TaskCatalog TASKS = TaskCatalog.standard();
 
     private final Io io;
     private final Supplier<StopSignal> stops;
@@ -95,8 +99,13 @@ final class NodeCommand implements Callable<Integer> {
     List<String> resources = List.of();
 
     @Option(names = "--tasks", split = ",", paramLabel = "T[,T...]", hideParamSyntax = true,
-            description = "The vehicle's tasks, e.g. Explorer,Relay (default: none).")
+            description = "The vehicle's tasks, from Aggregator, Assist, Beacon, Explorer, HazardDetector, Navigator, Relay (default: none); each is advertised with its full capability description.")
     List<String> tasks = List.of();
+
+    @Option(names = "--allow-path", paramLabel = "DIR",
+            description = "Also allow the mission instance's <missionClass href> to name a file in DIR or below "
+                    + "(repeatable; by default only the instance's own folder and below).")
+    List<Path> allowPaths = new java.util.ArrayList<>();
 
     @Option(names = "--repository", paramLabel = "DIR",
             description = "The policy repository (default: the " + CellOptions.DEFAULT_REPOSITORY + "/ folder beside the "
@@ -118,10 +127,16 @@ final class NodeCommand implements Callable<Integer> {
         UdpSettings udp = udpSettings();
         names("--resources", resources);
         names("--tasks", tasks);
+        for (String task : tasks) {
+            if (!TASKS.contains(task)) {
+                throw usage("--tasks '" + task + "' is not a known task; the known tasks are "
+                        + String.join(", ", TASKS.names()));
+            }
+        }
         PolicyRepository repo = repository();
         NodeFiles.Node node;
         try {
-            node = new NodeFiles(io.workingDir()).read(key, credential, authority, mission, repo, System.currentTimeMillis());
+            node = new NodeFiles(io.workingDir(), allowPaths).read(key, credential, authority, mission, repo, System.currentTimeMillis());
         } catch (NodeFiles.Refused e) {
             e.details().forEach(io.stderr()::println);
             io.stderr().println("smc node: " + e.getMessage());
@@ -138,8 +153,7 @@ final class NodeCommand implements Callable<Integer> {
     /** Runs the cell until the stop signal fires; 1 when it cannot start (the sockets, the cell's boot). */
     private int run(NodeFiles.Node node, UdpSettings udp, PolicyRepository repo) {
         String vehicle = node.identity().id();
-        CapabilityDescription description = CapabilityDescription.of(vehicle, new TreeSet<>(resources),
-                tasks.stream().map(TaskDescription::empty).toList());
+        CapabilityDescription description = describe(vehicle, resources, tasks);
         NodeLog log = new NodeLog(io.stdout());
         CellHost.Settings settings = CellHost.settings(vehicle, node.mission(), description, repo)
                 .udp(udp).commander(commander).security(node.identity(), node.trust())
@@ -169,6 +183,21 @@ final class NodeCommand implements Callable<Integer> {
             log.line("down: vehicle " + vehicle + " stopped: " + why);
         }
         return 0;
+    }
+
+    /**
+     * The vehicle's capability description: its resources, and the Table V description of each of
+     * its tasks as the task catalogue gives it (what discovery summaries and full capability
+     * replies carry).
+     *
+     * @throws IllegalArgumentException naming the known tasks, for a task the catalogue does not know
+     */
+    static CapabilityDescription describe(String vehicle, List<String> resources, List<String> tasks) {
+        List<TaskDescription> described = new ArrayList<>();
+        for (String task : new TreeSet<>(tasks)) {
+            described.add(TASKS.describe(task));
+        }
+        return CapabilityDescription.of(vehicle, new TreeSet<>(resources), described);
     }
 
     private UdpSettings udpSettings() {

@@ -57,10 +57,20 @@ final class NodeFiles {
     }
 
     private final Path workingDir;
+    private final List<Path> allowedDirs;
 
     /** Files given relative are read from {@code workingDir}. */
     NodeFiles(Path workingDir) {
+        this(workingDir, List.of());
+    }
+
+    /**
+     * Files given relative are read from {@code workingDir}; the mission's class may also be in one
+     * of {@code allowedDirs} (relative ones from {@code workingDir}), not only beside its instance.
+     */
+    NodeFiles(Path workingDir, List<Path> allowedDirs) {
         this.workingDir = workingDir;
+        this.allowedDirs = allowedDirs.stream().map(workingDir::resolve).toList();
     }
 
     /**
@@ -70,7 +80,7 @@ final class NodeFiles {
      */
     Node read(Path key, Path credential, Path authority, Path mission, PolicyRepository repository, long nowMillis)
             throws Refused {
-        SigningKey signingKey = readFile("--key", key, KeyFiles::parsePrivateKey);
+        SigningKey signingKey = vehicleKey(key);
         Credential cred = readFile("--credential", credential, KeyFiles::parseCredential);
         VerificationKey authorityKey = readFile("--authority", authority, KeyFiles::parsePublicKey);
         if (!cred.vehicleKey().equals(signingKey.verificationKey())) {
@@ -106,7 +116,7 @@ final class NodeFiles {
     private Mission mission(Path given, PolicyRepository repository) throws Refused {
         Path file = readable("--mission", given);
         try {
-            return new MissionLoader(repository).load(file);
+            return new MissionLoader(repository, allowedDirs).load(file);
         } catch (IOException e) {
             throw new Refused("--mission " + given + ": cannot read it: " + e.getMessage());
         } catch (MissionException e) {
@@ -130,6 +140,18 @@ final class NodeFiles {
             throw new Refused(option + " " + e.getMessage());
         } catch (IOException e) {
             throw new Refused(option + " " + given + ": cannot read it: " + e.getMessage());
+        }
+    }
+
+    /** A vehicle's private key, readable by its owner only. */
+    private SigningKey vehicleKey(Path given) throws Refused {
+        Path file = readable("--key", given);
+        try {
+            return KeyFiles.readPrivateKey(file, KeyFiles.Use.VEHICLE);
+        } catch (KeyFileException e) {
+            throw new Refused("--key " + e.getMessage());
+        } catch (IOException e) {
+            throw new Refused("--key " + given + ": cannot read it: " + e.getMessage());
         }
     }
 

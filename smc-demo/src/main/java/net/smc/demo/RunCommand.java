@@ -32,7 +32,9 @@ final class RunCommand implements Callable<Integer> {
     @Mixin
     CellOptions options;
 
-    @Parameters(arity = "1..*", paramLabel = "FILE.p2", description = "The files to run, in order.")
+    @Parameters(arity = "1..*", paramLabel = "FILE.p2", description = {"The files to run, in order.",
+        "Arguments after -- are not files: they are the user's arguments, answered by root argsAsArray "
+                + "and root argsAsHash."})
     List<Path> files;
 
     RunCommand(Io io) {
@@ -41,6 +43,20 @@ final class RunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        return options.withBootedCell(spec, io, files, cell -> cell.exitStatus().orElse(cell.clean() ? 0 : 1));
+        List<String> given = spec.commandLine().getParseResult().originalArgs();
+        int dashes = given.indexOf("--");
+        List<Path> toRun = files;
+        if (dashes >= 0) {
+            int userCount = given.size() - dashes - 1;
+            options.userArguments = List.copyOf(given.subList(dashes + 1, given.size()));
+            toRun = files.subList(0, files.size() - userCount);
+            if (toRun.isEmpty()) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "no files to run before --");
+            }
+        }
+        return options.withBootedCell(spec, io, toRun, cell -> {
+            cell.runTimers();
+            return cell.exitStatus().orElse(cell.clean() ? 0 : 1);
+        });
     }
 }

@@ -63,6 +63,10 @@ final class ShellCommand implements Callable<Integer> {
         Cell.Session session = cell.cell().session();
         ShellInput input = new ShellInput(io);
         for (String text = input.next(); text != null; text = input.next()) {
+            cell.cell().timers().runDue();   // the shell runs due timers between inputs, never while it waits
+            if (cell.exitStatus().isPresent()) {
+                return;
+            }
             RunResult result = session.run(SOURCE, text);
             if (result.ok()) {
                 io.stdout().println(Cell.print(result.value()));

@@ -51,6 +51,11 @@ final class ValidateCommand implements Callable<Integer> {
                     + "(default: the " + CellOptions.DEFAULT_REPOSITORY + "/ folder of the current directory).")
     Path repository;
 
+    @Option(names = "--allow-path", paramLabel = "DIR",
+            description = "Also allow the instance's <missionClass href> to name a file in DIR or below "
+                    + "(repeatable; by default only the instance's own folder and below).")
+    List<Path> allowPaths = new java.util.ArrayList<>();
+
     @Parameters(arity = "1", paramLabel = "INSTANCE.xml", description = "The mission instance file.")
     Path instance;
 
@@ -61,7 +66,8 @@ final class ValidateCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         Path file = CellOptions.readableFiles(spec, io.workingDir(), List.of(instance)).get(0);
-        MissionLoader loader = new MissionLoader(repository());
+        MissionLoader loader = new MissionLoader(repository(),
+                allowPaths.stream().map(p -> io.workingDir().resolve(p)).toList());
         Mission mission;
         try {
             mission = loader.load(file);

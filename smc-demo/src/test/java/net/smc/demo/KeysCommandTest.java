@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.security.SecureRandom;
 import java.util.Base64;
+import java.util.List;
 import net.smc.core.security.Claims;
 import net.smc.core.security.Credential;
 import net.smc.core.security.CredentialStatus;
@@ -146,9 +147,64 @@ class KeysCommandTest {
     }
 
     @Test
+    void writtenPrivateKeys_areOwnerOnly_andSayWhatTheyAreFor() throws Exception {
+        smc.run("keys", "authority", "--out", "keys");
+        smc.run("keys", "vehicle", "--id", "v1", "--out", "keys");
+
+        assertEquals("rw-------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(dir.resolve("keys/authority.key"))));
+        assertEquals("rw-------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(dir.resolve("keys/v1.key"))));
+        assertTrue(Files.readString(dir.resolve("keys/authority.key")).contains("\nuse: authority\n"));
+        assertTrue(Files.readString(dir.resolve("keys/v1.key")).contains("\nuse: vehicle\n"));
+    }
+
+    @Test
+    void privateKeyOthersMayRead_isRefused_namingTheModeAndTheChmod() throws Exception {
+        smc.run("keys", "authority", "--out", "keys");
+        smc.run("keys", "vehicle", "--id", "v1", "--out", "keys");
+        for (String mode : List.of("rw-r--r--", "rw-rw-rw-", "rwxrwxrwx")) {
+            Path key = dir.resolve("keys/authority.key");
+            Files.setPosixFilePermissions(key, java.nio.file.attribute.PosixFilePermissions.fromString(mode));
+
+            Smc.Result result = smc.run("keys", "issue", "--authority", "keys/authority.key", "--vehicle-pub", "keys/v1.pub",
+                    "--id", "v1", "--mission", "M", "--valid-for", "1d", "--out", "v1.cred");
+
+            assertEquals(1, result.status(), result.err());
+            assertTrue(result.err().contains("private key file has mode "), result.err());
+            assertTrue(result.err().contains("chmod 600 " + key), result.err());
+            assertFalse(Files.exists(dir.resolve("v1.cred")));
+        }
+    }
+
+    @Test
+    void vehicleKeyGivenAsTheAuthority_isRefusedByItsKind() throws Exception {
+        smc.run("keys", "vehicle", "--id", "v1", "--out", "keys");
+
+        Smc.Result result = smc.run("keys", "issue", "--authority", "keys/v1.key", "--vehicle-pub", "keys/v1.pub",
+                "--id", "v1", "--mission", "M", "--valid-for", "1d", "--out", "v1.cred");
+
+        assertEquals(1, result.status(), result.err());
+        assertTrue(result.err().contains("this is a vehicle's private key, not an authority's"), result.err());
+    }
+
+    @Test
+    void privateKeyWrittenBeforeTheUseLine_isRecognisedByItsComment() throws Exception {
+        net.smc.core.security.SigningKey authority = net.smc.core.security.SigningKey.generate(new java.security.SecureRandom());
+        Path key = Path.of(smc.file("old-authority.key", KeyFiles.privateKeyText(authority, "mission authority")));
+        Files.setPosixFilePermissions(key, java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"));
+        smc.run("keys", "vehicle", "--id", "v1", "--out", "keys");
+
+        Smc.Result result = smc.run("keys", "issue", "--authority", "old-authority.key", "--vehicle-pub", "keys/v1.pub",
+                "--id", "v1", "--mission", "M", "--valid-for", "1d", "--out", "v1.cred");
+
+        assertEquals(0, result.status(), result.err());
+    }
+
+    @Test
     void show_privateKey_printsItsPublicHalf_neverThePrivateKey() throws Exception {
         smc.run("keys", "authority", "--out", "keys");
-        String privateLine = Files.readString(dir.resolve("keys/authority.key")).lines().filter(l -> !l.startsWith("#")).toList().get(1);
+        String privateLine = Files.readString(dir.resolve("keys/authority.key")).lines().filter(l -> !l.startsWith("#") && !l.startsWith("use:")).toList().get(1);
         String seed = Base64.getEncoder().encodeToString(java.util.Arrays.copyOf(Base64.getDecoder().decode(privateLine), 32));
 
         Smc.Result result = smc.run("keys", "show", "keys/authority.key");

@@ -135,6 +135,29 @@ class NodeCommandTest {
     }
 
     @Test
+    void unknownTask_isAUsageErrorListingTheKnownTasks() {
+        Smc.Result result = node(args("a1", "127.0.0.1:4000", "127.255.255.255:47474", "--tasks", "Explorer,Teleporter"));
+
+        assertEquals(2, result.status());
+        assertEquals("smc node: --tasks 'Teleporter' is not a known task; the known tasks are Aggregator, Assist, Beacon,"
+                + " Explorer, HazardDetector, Navigator, Relay", result.errLines().get(0));
+    }
+
+    @Test
+    void theAdvertisedDescription_isEachTasksTableVDescription_andSurvivesTheFullCapabilityReply() throws Exception {
+        net.smc.core.capability.CapabilityDescription d =
+                NodeCommand.describe("a1", List.of("communication"), List.of("Navigator", "Aggregator"));
+
+        assertEquals(List.of("Aggregator", "Navigator"), List.copyOf(d.taskNames()));
+        net.smc.core.capability.TaskDescription nav = d.task("Navigator").orElseThrow();
+        assertTrue(nav.operations().contains(new net.smc.core.capability.OperationDescription("goTo", List.of("double", "double"))),
+                nav.toString());
+        assertEquals(List.of("arrived", "blocked"), nav.events().stream().map(e -> e.name()).toList());
+        net.smc.core.capability.CapabilityCodec codec = net.smc.core.capability.CapabilityCodec.STANDARD;
+        assertEquals(d, codec.decodeDescription(codec.encode(d)));
+    }
+
+    @Test
     void badResourceName_isAUsageErrorNamingIt() {
         Smc.Result result = node(args("a1", "127.0.0.1:4000", "127.255.255.255:47474", "--resources", "motion,,video"));
 

@@ -210,4 +210,35 @@ class RunCommandTest {
         assertEquals("", result.err());
         assertEquals(List.of("true", "Number"), result.outLines());
     }
+
+    @Test
+    void run_passesTheArgumentsAfterDashDash_toTheCell() {
+        String file = smc.file("args.p2", """
+                root print: root argsAsArray.
+                root print: root argsAsHash.
+                """);
+
+        Smc.Result result = smc.run("run", file, "--", "-n", "3", "x");
+
+        assertEquals(List.of("[-n, 3, x]", "{ n=\"3\" }"), result.outLines());
+        assertEquals(0, result.status());
+    }
+
+    @Test
+    void run_keepsGoingWhileATimerIsPending_andEndsWhenItIsCancelled() {
+        String file = smc.file("ticks.p2", """
+                root/event at: "tick" put: (root/factory/event create: #("count")).
+                p := root/factory/ecapolicy create.
+                p event: root/event/tick; action: [:count | root print: "tick " + count.
+                    (count == 3) ifTrue: [root/timer cancel]].
+                p active: true.
+                root at: "timer" put: (root load: "Timer") create.
+                root/timer repeat: 5 event: root/event/tick.
+                """);
+
+        Smc.Result result = smc.run("run", file);
+
+        assertEquals(List.of("tick 1", "tick 2", "tick 3"), result.outLines());
+        assertEquals(0, result.status());
+    }
 }

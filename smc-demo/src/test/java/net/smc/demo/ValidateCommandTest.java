@@ -89,6 +89,30 @@ class ValidateCommandTest {
     }
 
     @Test
+    void classOutsideTheInstancesFolder_isRefusedUnlessAllowedWithAllowPath() throws Exception {
+        Files.createDirectories(dir.resolve("classes"));
+        Files.copy(PROJECT.resolve("missions/rescue.class.xml"), dir.resolve("classes/rescue.class.xml"));
+        Files.createDirectories(dir.resolve("instances"));
+        String instance = smc.file("instances/rescue.instance.xml", Files.readString(PROJECT.resolve("missions/rescue.instance.xml"))
+                .replace("href=\"rescue.class.xml\"", "href=\"../classes/rescue.class.xml\""));
+
+        Smc.Result refused = smc.run("validate", "--repository", REPOSITORY, instance);
+        Smc.Result allowed = smc.run("validate", "--repository", REPOSITORY, "--allow-path", "classes", instance);
+        Smc.Result system = smc.run("validate", "--repository", REPOSITORY, smc.file("evil.instance.xml",
+                Files.readString(PROJECT.resolve("missions/rescue.instance.xml")).replace("href=\"rescue.class.xml\"",
+                        "href=\"../../../../../../../../../etc/passwd\"")));
+
+        assertEquals(1, refused.status(), refused.err());
+        assertTrue(refused.err().contains("refused mission class '../classes/rescue.class.xml': it is outside the "
+                + "instance's folder"), refused.err());
+        assertEquals(0, allowed.status(), allowed.err());
+        assertEquals(1, system.status(), system.err());
+        assertEquals(1, system.errLines().size(), system.err());
+        assertTrue(system.err().contains("refused mission class '../../../../../../../../../etc/passwd'"), system.err());
+        assertTrue(!system.err().contains("root"), "nothing of /etc/passwd is shown: " + system.err());
+    }
+
+    @Test
     void errorInTheClassFile_namesTheClassFile() throws Exception {
         String instance = writeRescueCopy(Files.readString(PROJECT.resolve("missions/rescue.instance.xml")));
         Path classFile = dir.resolve("rescue.class.xml");

@@ -1,7 +1,6 @@
 package net.smc.policy;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -13,10 +12,12 @@ import java.util.Random;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.Unit;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
+import net.smc.policy.runtime.Execution;
 import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
 import net.smc.policy.runtime.PonderError;
@@ -44,10 +45,12 @@ import net.smc.policy.runtime.Values;
  */
 public final class Cell {
     private final CellRuntime runtime;
+    private final TimerQueue timers;
     private Integer exitStatus;
 
-    private Cell(CellRuntime runtime) {
+    private Cell(CellRuntime runtime, TimerQueue timers) {
         this.runtime = runtime;
+        this.timers = timers;
     }
 
     public static Builder builder() {
@@ -63,7 +66,24 @@ public final class Cell {
         private RandomGenerator random = new Random(0);
         private Limits limits = Limits.DEFAULT;
         private PolicyRepository repository;
+        private TimerScheduler scheduler;
+        private List<String> arguments = List.of();
         private final Map<String, Class<?>> classes = new LinkedHashMap<>();
+
+        /**
+         * Where timers ({@code root load: "Timer"}) wait (default: a {@link TimerQueue} on the
+         * cell's clock that the owner drives through {@link Cell#timers()}).
+         */
+        public Builder scheduler(TimerScheduler timerScheduler) {
+            this.scheduler = Objects.requireNonNull(timerScheduler, "scheduler");
+            return this;
+        }
+
+        /** The user's arguments, answered by {@code root argsAsArray} and {@code root argsAsHash} (default: none). */
+        public Builder arguments(List<String> userArguments) {
+            this.arguments = List.copyOf(userArguments);
+            return this;
+        }
 
         /** Where {@code root print:} lines go (default: nowhere). */
         public Builder output(Consumer<String> lineSink) {
@@ -113,8 +133,9 @@ public final class Cell {
         }
 
         public Cell build() {
+            TimerQueue queue = scheduler == null ? new TimerQueue(clock) : null;
             return new Cell(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
-                    repository, Map.copyOf(classes))));
+                    repository, Map.copyOf(classes), scheduler == null ? queue : scheduler, arguments)), queue);
         }
     }
 
@@ -127,7 +148,7 @@ public final class Cell {
     public RunResult runFile(Path file) {
         String text;
         try {
-            text = Files.readString(file);
+            text = SourceFiles.read(file, runtime.limits().maxUnitChars());
         } catch (IOException | java.io.UncheckedIOException e) {
             Diagnostic cannotRead = new Diagnostic(null, file + ": cannot read: " + e.getMessage());
             runtime.report(cannotRead);
@@ -149,8 +170,30 @@ public final class Cell {
         return run("load", "root read: \"" + uri.replace("\"", "\\\"") + "\"");
     }
 
+    /**
+     * The cell's own timer queue, when it was built without a {@link Builder#scheduler}: run
+     * {@link TimerQueue#runDue()} on the cell's thread when its clock reaches
+     * {@link TimerQueue#nextDue()}.
+     *
+     * @throws IllegalStateException when the cell was given a scheduler of its own
+     */
+    public TimerQueue timers() {
+        if (timers == null) {
+            throw new IllegalStateException("this cell was given a scheduler; drive that one");
+        }
+        return timers;
+    }
+
+    /** Whether the cell has exited, by a unit or by a timer's event. */
+    private boolean exited() {
+        if (exitStatus == null && runtime.exitStatus() != null) {
+            exitStatus = runtime.exitStatus();
+        }
+        return exitStatus != null;
+    }
+
     private RunResult run(String sourceName, String text, Path file, CellRuntime.Variables variables) {
-        if (exitStatus != null) {
+        if (exited()) {
             return new RunResult(RunResult.Status.EXITED, null, List.of());
         }
         List<Diagnostic> seen = new ArrayList<>();
@@ -181,7 +224,7 @@ public final class Cell {
      *                     ({@code Ponder2AuthorizationException: selector}), or the operation fails
      */
     public Object sendAs(Object subject, Object receiver, String selector, Object... args) {
-        if (exitStatus != null) {
+        if (exited()) {
             throw new PonderError("the cell has exited");
         }
         Object[] converted = new Object[args.length];
@@ -271,7 +314,7 @@ public final class Cell {
 
     /** Raises an event of a template from Java, as {@link #raise(String, Object...)} does. */
     public boolean raise(EventTemplate template, Object... values) {
-        if (exitStatus != null) {
+        if (exited()) {
             return false;
         }
         try {
@@ -279,7 +322,12 @@ public final class Cell {
             for (int i = 0; i < values.length; i++) {
                 converted[i] = CellRuntime.fromJava(values[i]);
             }
-            template.raise(runtime.newExecution(), converted);
+            Execution ex = runtime.newExecution();
+            try {
+                template.raise(ex, converted);
+            } finally {
+                runtime.finish(ex);
+            }
             return true;
         } catch (PonderError e) {
             runtime.report(new Diagnostic(e.pos(), "raise: " + e.getMessage()));
@@ -295,6 +343,7 @@ public final class Cell {
 
     /** The status given to {@code root exit}, once it has run. */
     public OptionalInt exitStatus() {
+        exited();
         return exitStatus == null ? OptionalInt.empty() : OptionalInt.of(exitStatus);
     }
 

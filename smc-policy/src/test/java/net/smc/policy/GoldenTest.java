@@ -72,26 +72,59 @@ class GoldenTest {
             }
         }
         List<String> lines = new ArrayList<>();
+        long[] now = {FIXED_CLOCK};
         Cell cell = Cell.builder()
                 .output(lines::add)
                 .errors(d -> lines.add(d.toString()))
                 .auth(auth)
                 .limits(limits)
-                .clock(() -> FIXED_CLOCK)
+                .clock(() -> now[0])
+                .arguments(List.of("-a", "-b", "gold", "-c", "silver", "copper", "-d"))
                 .random(new Random(42))
                 .repository(new PolicyRepository(goldenDir().resolve("_repository")))
                 .build();
         String name = script.getFileName().toString();
         List<String> units = units(text);
+        List<Long> advances = advances(text);
         for (int i = 0; i < units.size(); i++) {
             if (i == 1) {
                 cell.endBoot();
             }
-            if (cell.run(name, units.get(i), script).status() == RunResult.Status.EXITED) {
+            if (i > 0) {
+                advance(cell, now, advances.get(i - 1));
+            }
+            if (cell.exitStatus().isPresent()
+                    || cell.run(name, units.get(i), script).status() == RunResult.Status.EXITED) {
                 break;
             }
         }
         return lines;
+    }
+
+    /** Moves the virtual clock on by {@code millis}, running each timer task at its due time. */
+    static void advance(Cell cell, long[] now, long millis) {
+        long target = now[0] + millis;
+        while (cell.timers().nextDue().isPresent() && cell.timers().nextDue().getAsLong() <= target
+                && cell.exitStatus().isEmpty()) {
+            now[0] = Math.max(now[0], cell.timers().nextDue().getAsLong());
+            cell.timers().runDue();
+        }
+        now[0] = target;
+    }
+
+    private static boolean isSplit(String line) {
+        return line.equals("//-- unit") || line.startsWith("//-- advance ");
+    }
+
+    /** For each split line in order: the milliseconds of {@code //-- advance N}, 0 for {@code //-- unit}. */
+    static List<Long> advances(String text) {
+        List<Long> advances = new ArrayList<>();
+        for (String line : text.split("\n", -1)) {
+            if (isSplit(line)) {
+                advances.add(line.startsWith("//-- advance ") ? Long.parseLong(line.substring(13).trim()) : 0L);
+            }
+        }
+        return advances;
     }
 
     /** Splits at lines that are exactly {@code //-- unit}; each unit keeps its lines' numbers. */
@@ -100,7 +133,7 @@ class GoldenTest {
         String[] lines = text.split("\n", -1);
         StringBuilder current = new StringBuilder();
         for (int i = 0; i < lines.length; i++) {
-            if (lines[i].equals("//-- unit")) {
+            if (isSplit(lines[i])) {
                 units.add(current.toString());
                 current = new StringBuilder("\n".repeat(i + 1));
                 continue;

@@ -117,7 +117,9 @@ final class NodeTeam {
             SigningKey key = SigningKey.generate(random);
             Credential credential = Credential.issue(new Claims(id, key.verificationKey(), MISSION, now - 60_000,
                     now + 3_600_000), authority);
-            Files.writeString(keys.resolve(id + ".key"), KeyFiles.privateKeyText(key, id));
+            Files.writeString(keys.resolve(id + ".key"), KeyFiles.privateKeyText(key, KeyFiles.Use.VEHICLE, id));
+            Files.setPosixFilePermissions(keys.resolve(id + ".key"),
+                    java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"));
             Files.writeString(keys.resolve(id + ".cred"), KeyFiles.credentialText(credential, id));
         }
     }

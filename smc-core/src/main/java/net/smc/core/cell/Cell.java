@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.SplittableRandom;
+import java.util.TreeSet;
 import java.util.function.Consumer;
 
 import net.smc.core.capability.CapabilityDescription;
@@ -18,6 +19,7 @@ import net.smc.core.mission.MissionRole;
 import net.smc.core.role.PolicySource;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
+import net.smc.core.role.TaskProvider;
 import net.smc.core.router.MessageRouter;
 import net.smc.core.security.AuthenticatingTransport;
 import net.smc.core.security.Credential;
@@ -62,12 +64,14 @@ public final class Cell {
     private final PolicyStore store = new PolicyStore();
     private final List<Diagnostic> diagnostics = new ArrayList<>();
     private final boolean commanding;
+    private final TaskProvider tasks;
     private boolean started;
 
     private Cell(Builder b) {
         this.vehicle = b.vehicle;
         this.mission = b.mission;
         this.commanding = b.commander;
+        this.tasks = b.tasks;
         Scheme scheme = b.scheme != null ? b.scheme
                 : mission.parameter("scheme").map(p -> Scheme.parse(String.valueOf(p.value()))).orElse(Scheme.DISTRIBUTED);
         this.slots = new Slots(mission, scheme);
@@ -76,6 +80,7 @@ public final class Cell {
         Consumer<String> output = b.output;
         this.engine = net.smc.policy.Cell.builder()
                 .clock(b.clock::nowMillis)
+                .scheduler((delay, task) -> b.scheduler.schedule(delay, task)::cancel)   // timers in the cell's (virtual) time
                 .random(random.split())
                 .repository(b.repository)
                 .output(output)
@@ -262,7 +267,7 @@ public final class Cell {
         return comm;
     }
 
-    /** The role a vehicle loads for {@code name}: the mission's policies as this cell holds them. */
+    /** The role a vehicle loads for {@code name}: the mission's policies as this cell holds them, and its tasks. */
     private Role roleOf(String name, PolicyStore from) {
         MissionRole r = slots.role(name);
         Role.Builder b = Role.builder(name);
@@ -273,6 +278,12 @@ public final class Cell {
             b.authorisation(PolicySource.text(uri, text(from, uri, name)));
         }
         slots.managedRoles(name).forEach(b::manages);
+        if (tasks != TaskProvider.NONE) {
+            for (String task : new TreeSet<>(r.requirement().tasks())) {
+                b.task(task, () -> tasks.task(task).orElseThrow(() -> new IllegalStateException("vehicle '" + vehicle
+                        + "' has no task '" + task + "' (its tasks: " + new TreeSet<>(tasks.names()) + ")")));
+            }
+        }
         return b.build();
     }
 
@@ -317,6 +328,7 @@ public final class Cell {
         private Consumer<CellEvent> trace = e -> { };
         private Consumer<String> output = line -> { };
         private SenderSettings senderSettings;
+        private TaskProvider tasks = TaskProvider.NONE;
 
         private Builder(String vehicle, Mission mission, CapabilityDescription description) {
             this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
@@ -388,6 +400,16 @@ public final class Cell {
         /** Overrides the retransmission settings the timing gives ({@link Timing#senderSettings()}). */
         public Builder senderSettings(SenderSettings settings) {
             this.senderSettings = Objects.requireNonNull(settings, "settings");
+            return this;
+        }
+
+        /**
+         * The vehicle's tasks: a role it is assigned starts those its mission requires (bound at
+         * {@code root/task/<name>}), and withdrawing the role stops them. Default
+         * {@link TaskProvider#NONE}: roles load without tasks.
+         */
+        public Builder tasks(TaskProvider tasks) {
+            this.tasks = Objects.requireNonNull(tasks, "tasks");
             return this;
         }
 

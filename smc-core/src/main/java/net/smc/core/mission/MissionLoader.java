@@ -38,12 +38,28 @@ import net.smc.policy.PolicyRepository;
  * (its Stax factory is configured once and only creates readers), so threads may share one.
  */
 public final class MissionLoader {
+    /** The largest mission file read, in bytes; a larger one is refused unread. */
+    public static final long MAX_FILE_BYTES = 1024 * 1024;
+
     private final PolicyRepository repository;
+    private final List<Path> allowedDirs;
     private final XmlReader xml = new XmlReader();
 
-    /** A loader that resolves policy URIs in {@code repository}. */
+    /**
+     * A loader that resolves policy URIs in {@code repository}; a class {@code href} must name a
+     * file in the instance's folder or below it.
+     */
     public MissionLoader(PolicyRepository repository) {
+        this(repository, List.of());
+    }
+
+    /**
+     * A loader that resolves policy URIs in {@code repository}; a class {@code href} must name a
+     * file in the instance's folder or below it, or in one of {@code allowedDirs} or below.
+     */
+    public MissionLoader(PolicyRepository repository, List<Path> allowedDirs) {
         this.repository = java.util.Objects.requireNonNull(repository, "repository");
+        this.allowedDirs = List.copyOf(allowedDirs);
     }
 
     /**
@@ -54,7 +70,7 @@ public final class MissionLoader {
      *                          file is an error of the instance, reported in a MissionException)
      */
     public Mission load(Path instanceFile) throws MissionException, IOException {
-        String text = Files.readString(instanceFile);
+        String text = readBounded(instanceFile);
         List<MissionError> instanceErrors = new ArrayList<>();
         List<MissionError> classErrors = new ArrayList<>();
         Reporter reporter = new Reporter(instanceFile, instanceErrors);
@@ -84,13 +100,20 @@ public final class MissionLoader {
             reporter.error(instance.classAt(), "invalid class file name '" + href + "'; <missionClass href> names a file");
             return null;
         }
+        String outside = outsideAllowed(instanceFile, classFile);
+        if (outside != null) {
+            reporter.error(instance.classAt(), "refused mission class '" + href + "': " + outside
+                    + "; <missionClass href> must name a file in the instance's folder or below, "
+                    + "unless that folder is allowed explicitly");
+            return null;
+        }
         String problem = !Files.exists(classFile) ? "no such file"
                 : !Files.isRegularFile(classFile) ? "not a regular file"
                 : null;
         String text = null;
         if (problem == null) {
             try {
-                text = Files.readString(classFile);
+                text = readBounded(classFile);
             } catch (IOException e) {
                 problem = String.valueOf(e.getMessage());
             }
@@ -107,6 +130,42 @@ public final class MissionLoader {
             ClassRules.check(spec, classReporter);
         }
         return spec;
+    }
+
+    /**
+     * Why {@code classFile} may not be opened, or null when it is in the instance's folder (or below)
+     * or in an allowed folder; symbolic links are followed before the check.
+     */
+    private String outsideAllowed(Path instanceFile, Path classFile) {
+        Path target;
+        List<Path> roots = new ArrayList<>();
+        try {
+            target = Files.exists(classFile) ? classFile.toRealPath() : classFile.toAbsolutePath().normalize();
+            Path folder = instanceFile.toAbsolutePath().getParent();
+            roots.add(folder == null ? Path.of("").toAbsolutePath() : folder.toRealPath());
+            for (Path dir : allowedDirs) {
+                roots.add(Files.exists(dir) ? dir.toRealPath() : dir.toAbsolutePath().normalize());
+            }
+        } catch (IOException e) {
+            return "its location cannot be checked (" + e.getClass().getSimpleName() + ")";
+        }
+        for (Path root : roots) {
+            if (target.startsWith(root)) {
+                return null;
+            }
+        }
+        return "it is outside the instance's folder " + roots.get(0)
+                + (roots.size() > 1 ? " and the allowed folders " + roots.subList(1, roots.size()) : "");
+    }
+
+    /** A mission file's text, refused unread when it is larger than {@link #MAX_FILE_BYTES}. */
+    private static String readBounded(Path file) throws IOException {
+        long size = Files.size(file);
+        if (size > MAX_FILE_BYTES) {
+            throw new IOException("file of " + size + " bytes is larger than the limit of " + MAX_FILE_BYTES
+                    + " bytes for a mission file");
+        }
+        return Files.readString(file);
     }
 
     private static List<MissionError> byPosition(List<MissionError> errors) {

@@ -22,6 +22,9 @@ import javax.xml.stream.XMLStreamReader;
  * base over the network.
  */
 final class XmlReader {
+    /** The most characters of text an element, or an attribute value, of a mission file may have. */
+    static final int MAX_TEXT_CHARS = 4096;
+
     private final XMLInputFactory factory;
 
     XmlReader() {
@@ -40,6 +43,9 @@ final class XmlReader {
         try {
             reader = factory.createXMLStreamReader(new StringReader(text));
             return readDocument(reader);
+        } catch (Refused e) {
+            reporter.syntaxError(e.line, e.column, e.getMessage());
+            return null;
         } catch (XMLStreamException e) {
             Location at = e.getLocation();
             reporter.syntaxError(at == null ? 1 : at.getLineNumber(), at == null ? 1 : at.getColumnNumber(),
@@ -57,6 +63,11 @@ final class XmlReader {
             int event = reader.next();
             switch (event) {
                 case XMLStreamConstants.START_ELEMENT -> open.push(new Builder(reader));
+                case XMLStreamConstants.DTD -> {
+                    Location at = reader.getLocation();
+                    throw new Refused(at.getLineNumber(), at.getColumnNumber(), "a DOCTYPE declaration is not "
+                            + "allowed; a mission file has no DTD (its format is missions/*.xsd), so remove <!DOCTYPE ...>");
+                }
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
                     if (!open.isEmpty()) {
                         open.peek().text(reader);
@@ -96,6 +107,18 @@ final class XmlReader {
         }
     }
 
+    /** A rule of mission files broken while reading: ends the read, at a position. */
+    private static final class Refused extends RuntimeException {
+        final int line;
+        final int column;
+
+        Refused(int line, int column, String message) {
+            super(message, null, false, false);
+            this.line = line;
+            this.column = column;
+        }
+    }
+
     /** An element whose end tag has not been read yet. */
     private static final class Builder {
         final String name;
@@ -115,7 +138,13 @@ final class XmlReader {
             for (int i = 0; i < reader.getAttributeCount(); i++) {
                 String namespace = reader.getAttributeNamespace(i);
                 if (namespace == null || namespace.isEmpty()) {
-                    attributes.put(reader.getAttributeLocalName(i), reader.getAttributeValue(i));
+                    String value = reader.getAttributeValue(i);
+                    if (value.length() > MAX_TEXT_CHARS) {
+                        throw new Refused(line, column, "<" + name + ">: attribute '" + reader.getAttributeLocalName(i)
+                                + "' has " + value.length() + " characters; an attribute value may have at most "
+                                + MAX_TEXT_CHARS);
+                    }
+                    attributes.put(reader.getAttributeLocalName(i), value);
                 }
             }
         }
@@ -137,6 +166,10 @@ final class XmlReader {
                 }
                 textLine = line;
                 textColumn = column;
+            }
+            if ((long) text.length() + chunk.length() > MAX_TEXT_CHARS) {
+                throw new Refused(line, column, "<" + name + ">: its text is longer than " + MAX_TEXT_CHARS
+                        + " characters; the text of an element may have at most " + MAX_TEXT_CHARS);
             }
             text.append(chunk);
         }

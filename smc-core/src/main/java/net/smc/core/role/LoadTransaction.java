@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import net.smc.core.task.Task;
+import net.smc.core.task.TaskDescriptionException;
 import net.smc.policy.Cell;
 import net.smc.policy.Diagnostic;
 import net.smc.policy.RunResult;
@@ -17,7 +18,8 @@ import net.smc.policy.runtime.Values;
 
 /**
  * One load of a role, all or nothing. In order: bind the missing tasks under
- * {@code root/role/<name>/task}, check the local interface against them, run the missing policy
+ * {@code root/role/<name>/task} and, for a task listed under its own name ({@link Task#name()}) and
+ * not yet bound, at {@code root/task/<name>} with its event templates ({@link Task#bind}), check the local interface against them, run the missing policy
  * files (role-mission, then authorisations) checking each against the convention of
  * {@code policies/README.md}, activate the new authorisation and then obligation policies, start
  * the new tasks. If anything fails, every policy the load created is deactivated and detached, the
@@ -37,6 +39,8 @@ final class LoadTransaction {
     private final List<String> newAuthorisations = new ArrayList<>();
     private final Map<String, Task> newTasks = new LinkedHashMap<>();
     private final List<TreeSnapshot.Addition> outside = new ArrayList<>();
+    private final List<Task> bound = new ArrayList<>();
+    private final List<TreeSnapshot.Addition> madeDomains = new ArrayList<>();
     private boolean createdRoleDomain;
 
     LoadTransaction(Cell cell, Role role, LoadedRole existing, Reassignment reassignment) {
@@ -126,6 +130,7 @@ final class LoadTransaction {
 
     private void bindTasks(RoleObject object) {
         Domain taskDomain = object.part(RoleObject.TASK);
+        TreeSnapshot before = TreeSnapshot.of(root);
         for (TaskBinding binding : missingTasks()) {
             Task task;
             ManagedObject handle;
@@ -144,6 +149,20 @@ final class LoadTransaction {
             }
             taskDomain.put(binding.name(), handle);
             newTasks.put(binding.name(), task);
+            if (binding.name().equals(task.name()) && !task.isBound()) {
+                try {
+                    task.bind(cell);
+                } catch (TaskDescriptionException | RuntimeException e) {
+                    throw fail("task '" + binding.name() + "'", "it could not be bound at root/task: " + e.getMessage());
+                }
+                bound.add(task);
+            }
+        }
+        // What binding added outside the role (root/task/<name>, event templates) goes with the role.
+        TreeSnapshot after = TreeSnapshot.of(root);
+        // A root/task or root/event domain made here goes only once empty: other roles' tasks may share it.
+        for (TreeSnapshot.Addition a : before.changesTo(after, after.below(object), root).added()) {
+            (a.value() instanceof Domain ? madeDomains : outside).add(a);
         }
     }
 
@@ -228,6 +247,9 @@ final class LoadTransaction {
     }
 
     private void rollBack(TreeSnapshot base) {
+        for (Task task : bound) {
+            task.unbind();
+        }
         for (Task task : started) {
             try {
                 task.stop();
@@ -246,6 +268,8 @@ final class LoadTransaction {
         object.describe(role);
         record.sources.addAll(sourcesRun);
         record.tasks.putAll(newTasks);
+        record.bound.addAll(bound);
+        record.madeDomains.addAll(madeDomains);
         record.outside.addAll(outside);
         return record;
     }

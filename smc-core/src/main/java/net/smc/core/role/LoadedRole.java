@@ -18,6 +18,10 @@ final class LoadedRole {
     final Set<String> sources = new LinkedHashSet<>();
     final Map<String, Task> tasks = new LinkedHashMap<>();
     final List<TreeSnapshot.Addition> outside = new ArrayList<>();
+    /** The tasks this role bound at {@code root/task} (and so unbinds when withdrawn). */
+    final List<Task> bound = new ArrayList<>();
+    /** Domains that binding its tasks made ({@code root/task}, {@code root/event}): removed when withdrawn, if empty. */
+    final List<TreeSnapshot.Addition> madeDomains = new ArrayList<>();
 
     LoadedRole(RoleObject object) {
         this.object = object;

@@ -31,8 +31,9 @@ import org.slf4j.LoggerFactory;
  *   <li>A load is idempotent: files and tasks already present for the role are not loaded again
  *       (the paper: "unless already present").</li>
  *   <li>A withdrawal leaves nothing of the role: its policies are deactivated and detached, its
- *       tasks stopped, the entries its files added elsewhere removed, its domain removed (and
- *       {@code root/role}, if this manager made it and it is now empty).</li>
+ *       tasks stopped and taken out of {@code root/task}, the entries its files and tasks added
+ *       elsewhere removed, its domain removed (and {@code root/role}, if this manager made it and it
+ *       is now empty).</li>
  * </ul>
  *
  * <pre>{@code
@@ -135,11 +136,19 @@ public final class RoleManager {
                 problems.add("task '" + task.getKey() + "' failed to stop: " + e);
             }
         }
+        for (Task task : role.bound) {
+            task.unbind();
+        }
         for (ManagedObject policy : Policies.under(role.object)) {
             Policies.retire(policy);
         }
         for (TreeSnapshot.Addition addition : role.outside) {
             addition.undo();
+        }
+        for (TreeSnapshot.Addition made : role.madeDomains) {
+            if (made.value() instanceof Domain d && d.entries().isEmpty()) {
+                made.undo();
+            }
         }
         if (cell.root().get(ROLE_DOMAIN) instanceof Domain holder) {
             if (holder.get(name) == role.object) {

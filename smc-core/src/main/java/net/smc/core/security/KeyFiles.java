@@ -28,7 +28,11 @@ import java.util.List;
  *   <tr><td>{@code smc-credential v1}</td><td>a credential in its binary form (see {@link Credential})</td></tr>
  * </table>
  *
- * <p>A private key file carries its public half because the JDK cannot derive it from the seed; the
+ * <p>A private key file says what it is for on a line {@code use: authority} or {@code use: vehicle}
+ * after its header (files written before that line existed are recognised by the comment
+ * {@code smc keys} wrote: {@code # mission authority} or {@code # vehicle ID}), and is read only when
+ * its owner alone may read it (no group or other permission bits, where the file system has POSIX
+ * permissions). A private key file carries its public half because the JDK cannot derive it from the seed; the
  * two are checked to match on reading. Files are at most {@value #MAX_FILE_BYTES} bytes.
  */
 public final class KeyFiles {
@@ -60,7 +64,122 @@ public final class KeyFiles {
         }
     }
 
+    /** What a private key is for. */
+    public enum Use {
+        /** A mission authority's key: it signs credentials. */
+        AUTHORITY("authority", "mission authority"),
+        /** A vehicle's key: it signs the vehicle's traffic. */
+        VEHICLE("vehicle", "vehicle ");
+
+        private final String word;
+        private final String legacyComment;
+
+        Use(String word, String legacyComment) {
+            this.word = word;
+            this.legacyComment = legacyComment;
+        }
+
+        /** The word of its {@code use:} line. */
+        public String word() {
+            return word;
+        }
+    }
+
+    private static final String USE_PREFIX = "use:";
+
     private KeyFiles() {
+    }
+
+    /** The text of a private key file for {@code use}; {@code comment} says whose key it is. */
+    public static String privateKeyText(SigningKey key, Use use, String comment) {
+        String text = privateKeyText(key, comment);
+        int afterHeader = text.indexOf('\n') + 1;
+        return text.substring(0, afterHeader) + USE_PREFIX + " " + use.word + "\n" + text.substring(afterHeader);
+    }
+
+    /**
+     * What a private key file's key is for: its {@code use:} line, or for a file written before that
+     * line existed, the comment {@code smc keys} wrote.
+     *
+     * @throws KeyFileException when the file does not say, or says something else
+     */
+    public static Use useOf(String text, String source) throws KeyFileException {
+        List<String> lines = lines(text);
+        for (int i = 1; i < lines.size(); i++) {
+            String line = lines.get(i).strip();
+            if (line.startsWith(USE_PREFIX)) {
+                String word = line.substring(USE_PREFIX.length()).strip();
+                for (Use use : Use.values()) {
+                    if (use.word.equals(word)) {
+                        return use;
+                    }
+                }
+                throw new KeyFileException(source + ": line " + (i + 1) + " is '" + shorten(line)
+                        + "'; a private key's use is 'use: authority' or 'use: vehicle'");
+            }
+        }
+        for (int i = 1; i < lines.size(); i++) {
+            String line = lines.get(i).strip();
+            for (Use use : Use.values()) {
+                if (line.startsWith("#") && line.substring(1).strip().startsWith(use.legacyComment)) {
+                    return use;
+                }
+            }
+        }
+        throw new KeyFileException(source + ": the private key does not say whether it is an authority's or a vehicle's "
+                + "(no 'use:' line); write a new one with 'smc keys authority' or 'smc keys vehicle'");
+    }
+
+    /**
+     * Refuses a private key file that others than its owner may read or write, where the file system
+     * has POSIX permissions.
+     *
+     * @throws KeyFileException naming the mode and the {@code chmod} that fixes it
+     */
+    public static void checkPrivate(Path path) throws IOException, KeyFileException {
+        java.util.Set<java.nio.file.attribute.PosixFilePermission> permissions;
+        try {
+            permissions = Files.getPosixFilePermissions(path);
+        } catch (UnsupportedOperationException e) {
+            return;   // no POSIX permissions to check on this file system
+        }
+        java.util.Set<java.nio.file.attribute.PosixFilePermission> open = java.util.EnumSet.copyOf(permissions);
+        open.removeAll(java.util.EnumSet.of(java.nio.file.attribute.PosixFilePermission.OWNER_READ,
+                java.nio.file.attribute.PosixFilePermission.OWNER_WRITE,
+                java.nio.file.attribute.PosixFilePermission.OWNER_EXECUTE));
+        if (!open.isEmpty()) {
+            throw new KeyFileException(path + ": private key file has mode " + mode(permissions)
+                    + " (" + java.nio.file.attribute.PosixFilePermissions.toString(permissions)
+                    + "), so others than its owner may read it; a private key must be readable by its owner only: "
+                    + "chmod 600 " + path);
+        }
+    }
+
+    private static String mode(java.util.Set<java.nio.file.attribute.PosixFilePermission> permissions) {
+        int mode = 0;
+        for (java.nio.file.attribute.PosixFilePermission p : permissions) {
+            mode |= 1 << (8 - p.ordinal());
+        }
+        return String.format("%03o", mode);
+    }
+
+    /**
+     * The private key at {@code path}, checked to be for {@code use} and readable by its owner only.
+     *
+     * @throws KeyFileException when it is not, naming what is wrong and how to fix it
+     */
+    public static SigningKey readPrivateKey(Path path, Use use) throws IOException, KeyFileException {
+        String text = read(path);
+        SigningKey key = parsePrivateKey(text, path.toString());
+        checkPrivate(path);
+        Use actual = useOf(text, path.toString());
+        if (actual != use) {
+            throw new KeyFileException(path + ": this is a " + actual.word + "'s private key, not a" 
+                    + (use == Use.AUTHORITY ? "n " : " ") + use.word + "'s; give the "
+                    + (use == Use.AUTHORITY ? "authority key written by 'smc keys authority' (authority.key)"
+                    : "vehicle key written by 'smc keys vehicle' (ID.key)"));
+        }
+        return key;
     }
 
     /** The text of a private key file; {@code comment} (one line, may be empty) says whose key it is. */
@@ -167,7 +286,7 @@ public final class KeyFiles {
         int dataLine = 0;
         for (int i = 1; i < lines.size(); i++) {
             String line = lines.get(i).strip();
-            if (line.isEmpty() || line.startsWith("#")) {
+            if (line.isEmpty() || line.startsWith("#") || (kind == Kind.PRIVATE_KEY && line.startsWith(USE_PREFIX))) {
                 continue;
             }
             if (data != null) {

@@ -47,7 +47,9 @@ class BadMissionFilesTest {
     @MethodSource("cases")
     void badCase_reportsExactlyTheExpectedErrors(String name) throws Exception {
         Path dir = resources().resolve("bad").resolve(name);
-        MissionLoader loader = new MissionLoader(new PolicyRepository(resources().resolve("repo")));
+        // Every case's class is the shared one in bad/common, beside the case's own folder.
+        MissionLoader loader = new MissionLoader(new PolicyRepository(resources().resolve("repo")),
+                List.of(resources().resolve("bad/common")));
 
         MissionException e = assertThrows(MissionException.class, () -> loader.load(dir.resolve("mission.instance.xml")));
 

@@ -1,6 +1,7 @@
 package net.smc.core.mission;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -125,10 +126,77 @@ class MissionLoaderTest {
 
     @Test
     void classHref_resolvesRelativeToTheInstanceFile() throws Exception {
+        write("instances/classes/reconnaissance.class.xml", TABLE_III);
+        Path instance = write("instances/house.instance.xml", reconnaissanceInstance("classes/reconnaissance.class.xml"));
+
+        assertEquals("Reconnaissance", loader.load(instance).className());
+    }
+
+    @Test
+    void classHref_outsideTheInstancesFolder_isRefusedUnread_unlessItsFolderIsAllowed() throws Exception {
         write("classes/reconnaissance.class.xml", TABLE_III);
         Path instance = write("instances/house.instance.xml", reconnaissanceInstance("../classes/reconnaissance.class.xml"));
 
-        assertEquals("Reconnaissance", loader.load(instance).className());
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertTrue(e.errors().get(0).message().contains("refused mission class '../classes/reconnaissance.class.xml': "
+                + "it is outside the instance's folder"), e.getMessage());
+        MissionLoader allowing = new MissionLoader(new PolicyRepository(dir.resolve("policies")),
+                List.of(dir.resolve("classes")));
+        assertEquals("Reconnaissance", allowing.load(instance).className());
+    }
+
+    @Test
+    void classHref_toSystemFiles_isRefusedWithoutEchoingThem() throws Exception {
+        for (String href : List.of("../../../../../../../../etc/passwd", "/etc/passwd", "/proc/self/environ")) {
+            Path instance = write("house.instance.xml", reconnaissanceInstance(href));
+
+            MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+            assertEquals(1, e.errors().size(), e.getMessage());
+            String message = e.errors().get(0).message();
+            assertTrue(message.startsWith("refused mission class '" + href + "': it is outside"), message);
+            assertFalse(message.contains("root"), "nothing of the file is shown: " + message);
+        }
+    }
+
+    @Test
+    void classHref_throughASymbolicLinkOutOfTheFolder_isRefused() throws Exception {
+        write("elsewhere/reconnaissance.class.xml", TABLE_III);
+        Files.createDirectories(dir.resolve("instances"));
+        Files.createSymbolicLink(dir.resolve("instances/link.class.xml"), dir.resolve("elsewhere/reconnaissance.class.xml"));
+        Path instance = write("instances/house.instance.xml", reconnaissanceInstance("link.class.xml"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertTrue(e.getMessage().contains("it is outside the instance's folder"), e.getMessage());
+    }
+
+    @Test
+    void overlongText_isRefusedWithItsElementAndLimit() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml")
+                .replace("<missionInstanceName>Test", "<missionInstanceName>" + "T".repeat(5000)));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertTrue(e.errors().get(0).toString().contains(":2:28: <missionInstanceName>: its text is longer than 4096 "
+                + "characters"), e.getMessage());
+    }
+
+    @Test
+    void overlongAttribute_andOversizedFile_areRefused() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("x".repeat(5000)));
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+        assertTrue(e.getMessage().contains("attribute 'href' has 5000 characters; an attribute value may have at most 4096"),
+                e.getMessage());
+
+        Path huge = write("huge.instance.xml", "<xml>" + " ".repeat((int) MissionLoader.MAX_FILE_BYTES) + "</xml>");
+        IOException tooBig = assertThrows(IOException.class, () -> loader.load(huge));
+        assertTrue(tooBig.getMessage().contains("is larger than the limit of 1048576 bytes"), tooBig.getMessage());
     }
 
     @Test
@@ -209,7 +277,21 @@ class MissionLoaderTest {
 
         MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
 
-        assertTrue(e.errors().get(0).toString().contains("not well-formed XML"), e.getMessage());
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertTrue(e.errors().get(0).toString().contains(":1:1: a DOCTYPE declaration is not allowed"), e.getMessage());
+    }
+
+    @Test
+    void externalDtd_isRefusedWithItsPosition() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", "<?xml version=\"1.0\"?>\n"
+                + "<!DOCTYPE xml SYSTEM \"http://example.invalid/mission.dtd\">\n"
+                + reconnaissanceInstance("reconnaissance.class.xml"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertTrue(e.errors().get(0).toString().contains(":2:1: a DOCTYPE declaration is not allowed"), e.getMessage());
     }
 
     @Test

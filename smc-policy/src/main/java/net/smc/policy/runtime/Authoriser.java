@@ -163,7 +163,7 @@ final class Authoriser {
                     throw abort;
                 } catch (PonderError e) {
                     e.at(condition.pos());
-                    runtime.report(new Diagnostic(e.pos(), "AuthorisationPolicy: condition error: " + e.getMessage()));
+                    runtime.report(ex, new Diagnostic(e.pos(), "AuthorisationPolicy: condition error: " + e.getMessage()));
                     return false;
                 }
                 if (answer != Boolean.TRUE) {

@@ -17,8 +17,11 @@ import net.smc.policy.AuthMode;
 import net.smc.policy.Diagnostic;
 import net.smc.policy.Limits;
 import net.smc.policy.PolicyRepository;
+import net.smc.policy.TimerScheduler;
+import net.smc.policy.stdlib.StandardObjects;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.SourcePos;
 import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
@@ -33,7 +36,7 @@ public final class CellRuntime {
     /** Configuration given by the embedding application. */
     public record Config(Consumer<String> output, Consumer<Diagnostic> errors, AuthMode auth, LongSupplier clock,
                          RandomGenerator random, Limits limits, PolicyRepository repository,
-                         Map<String, Class<?>> classes) {
+                         Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments) {
     }
 
     private final Config config;
@@ -47,6 +50,7 @@ public final class CellRuntime {
     private final List<Consumer<ManagedObject>> creationListeners = new ArrayList<>();
     private boolean booting = true;
     private long attachCounter;
+    private Integer exitStatus;
 
     public CellRuntime(Config config) {
         this.config = config;
@@ -56,6 +60,7 @@ public final class CellRuntime {
         registry.put("ObligationPolicy", ObligationPolicy.class);
         registry.put("AuthorisationPolicy", AuthorisationPolicy.class);
         registry.put("DateTime", DateTime.class);
+        registry.putAll(StandardObjects.classes());
         config.classes().forEach(this::register);
         this.root = new Root(this);
         Domain factory = new Domain(this);
@@ -84,7 +89,8 @@ public final class CellRuntime {
     ManagedObject load(String name) {
         Class<?> type = registry.get(name);
         if (type == null) {
-            throw new PonderError("Load Managed Object - Adaptor for '" + name + "' not found");
+            throw new PonderError("Load Managed Object - Adaptor for '" + name + "' not found; loadable: "
+                    + String.join(", ", new java.util.TreeSet<>(registry.keySet())));
         }
         return factories.computeIfAbsent(name, n -> factoryFor(type));
     }
@@ -107,6 +113,69 @@ public final class CellRuntime {
 
     public RandomGenerator random() {
         return config.random();
+    }
+
+    /** The arguments given after the files ({@code smc run FILE -- a b c}), for {@code root argsAsArray}. */
+    public List<String> arguments() {
+        return config.arguments();
+    }
+
+    /**
+     * Runs {@code task} after {@code delayMillis} on the cell's scheduler, as one run of its own: a
+     * {@link PonderError} it throws is reported, {@code root exit} ends the cell, and nothing runs
+     * once the cell has exited.
+     *
+     * @return an action that calls the task off
+     */
+    public Runnable schedule(long delayMillis, Runnable task) {
+        return config.scheduler().schedule(delayMillis, () -> {
+            if (exitStatus != null) {
+                return;
+            }
+            try {
+                task.run();
+            } catch (PonderError e) {
+                report(new Diagnostic(e.pos(), e.getMessage()));
+            } catch (StackOverflowError e) {
+                report(new Diagnostic(null, "stack exhausted in a timer; lower the nesting or the call depth limit"));
+            } catch (ExitRequest exit) {
+                exitStatus = exit.status();
+            }
+        });
+    }
+
+    /** The status {@code root exit} gave inside a scheduled task, or {@code null}. */
+    public Integer exitStatus() {
+        return exitStatus;
+    }
+
+    /** The names {@code root load:} knows, sorted. */
+    public java.util.Set<String> loadableNames() {
+        return new java.util.TreeSet<>(registry.keySet());
+    }
+
+    /**
+     * The text of a file that a unit names (resolved as {@code read:} resolves it: against the
+     * folder of the file {@code fromSource}, then the repository; also a {@code policy:} URI).
+     *
+     * @throws PonderError {@code cannot read 'x': file not found}
+     */
+    public String readText(String name, String fromSource) {
+        IncludeResolver.Included file;
+        try {
+            file = readFile(name, fromSource);
+        } catch (UncheckedIOException e) {
+            throw new PonderError("cannot read '" + name + "': " + e.getCause().getMessage());
+        }
+        if (file == null) {
+            throw new PonderError("cannot read '" + name + "': file not found");
+        }
+        return file.text();
+    }
+
+    /** Runs PonderTalk text as a nested unit of {@code ex} with fresh variables; errors propagate. */
+    public Object evaluate(Execution ex, String source, String text) {
+        return runNested(ex, source, text, null);
     }
 
     Authoriser authoriser() {
@@ -147,6 +216,26 @@ public final class CellRuntime {
             listener.accept(diagnostic);
         }
         config.errors().accept(diagnostic);
+    }
+
+    /**
+     * Reports an error of a run, unless the run has already reported {@link Limits#maxErrorsPerRun}:
+     * then it is only counted, and {@link #finish} reports the count.
+     */
+    void report(Execution ex, Diagnostic diagnostic) {
+        if (ex.admitError()) {
+            report(diagnostic);
+        }
+    }
+
+    /** Ends a run: reports how many of its errors were suppressed, if any were. */
+    public void finish(Execution ex) {
+        long suppressed = ex.errorsSuppressed();
+        if (suppressed > 0) {
+            report(new Diagnostic(null, suppressed + " more error" + (suppressed == 1 ? "" : "s")
+                    + " of this run suppressed (only the first " + config.limits().maxErrorsPerRun()
+                    + " are reported)"));
+        }
     }
 
     /** Also gives every diagnostic to {@code listener} until {@link #unlisten} removes it. */
@@ -190,6 +279,50 @@ public final class CellRuntime {
     /** A new run whose statements have root as their source. */
     public Execution newExecution() {
         return new Execution(this, root);
+    }
+
+    /** A new run whose statements have {@code source} (root, a policy, a managed object) as their source. */
+    public Execution newExecution(Object source) {
+        return new Execution(this, source);
+    }
+
+    /**
+     * Delivers an event as if raised at {@code start}: to its policies and observers and those of
+     * every domain above it. Counts as one nested call against the call depth limit, so that
+     * forwarding loops end with an error.
+     */
+    public void deliverAt(Execution ex, ManagedObject start, EventTemplate template, Object[] values) {
+        if (ex.depth >= limits().maxCallDepth()) {
+            throw new PonderError("call depth limit of " + limits().maxCallDepth() + " exceeded");
+        }
+        Object saved = ex.source;
+        ex.depth++;
+        ex.source = start;
+        try {
+            deliver(ex, template, values);
+        } finally {
+            ex.source = saved;
+            ex.depth--;
+        }
+    }
+
+    /**
+     * Sends a message within a running {@code ex} as {@code subject} would (checked when
+     * authorisation is on); counts as one nested call against the call depth limit.
+     */
+    public Object sendWithin(Execution ex, Object subject, Object receiver, String selector, Object[] args) {
+        if (ex.depth >= limits().maxCallDepth()) {
+            throw new PonderError("call depth limit of " + limits().maxCallDepth() + " exceeded");
+        }
+        Object saved = ex.source;
+        ex.depth++;
+        ex.source = subject;
+        try {
+            return interpreter.send(ex, receiver, selector, args, null);
+        } finally {
+            ex.source = saved;
+            ex.depth--;
+        }
     }
 
     /** Parses a unit; syntax errors are reported. The file, when given, anchors includes and reads. */
@@ -239,6 +372,7 @@ public final class CellRuntime {
                     + "; lower the nesting or the call depth limit"));
             return null;
         } finally {
+            finish(ex);
             if (variables != null) {
                 variables.values = frame.kept();
             }
@@ -278,7 +412,7 @@ public final class CellRuntime {
             return null;
         }
         try {
-            String text = Files.readString(file);
+            String text = SourceFiles.read(file, config.limits().maxUnitChars());
             String source = PolicyRepository.isUri(shown) ? shown : file.getFileName().toString();
             files.put(source, file.toAbsolutePath().normalize());
             return new IncludeResolver.Included(source, text);
@@ -354,6 +488,7 @@ public final class CellRuntime {
             for (ObligationPolicy policy : root.policiesFor(template)) {
                 policy.fire(ex, event);
             }
+            root.notifyObservers(ex, template, values);
             return;
         }
         List<ManagedObject> nodes = new ArrayList<>();
@@ -369,6 +504,7 @@ public final class CellRuntime {
             for (ObligationPolicy policy : node.policiesFor(template)) {
                 policy.fire(ex, event);
             }
+            node.notifyObservers(ex, template, values);
         }
     }
 }

@@ -136,15 +136,13 @@ public final class Interpreter {
             }
         }
         BlockCode code = block.code;
-        if (--ex.stepsLeft < 0) {
-            throw ex.stepLimitExceeded();
-        }
+        ex.step();
         if (args.length < code.params.length) {
             throw new PonderError("Not enough arguments for block. " + args.length + " given, "
                     + code.params.length + " expected.");
         }
         if (ex.depth >= runtime.limits().maxCallDepth()) {
-            throw new PonderError("call depth limit of " + runtime.limits().maxCallDepth() + " exceeded");
+            throw new CallDepthExceeded(runtime.limits().maxCallDepth());
         }
         ex.depth++;
         try {
@@ -179,9 +177,7 @@ public final class Interpreter {
 
     /** Invokes an operation on a receiver, with authorisation when it applies. */
     Object dispatch(Execution ex, Operation op, Object receiver, Object[] args, SourcePos pos) {
-        if (--ex.stepsLeft < 0) {
-            throw ex.stepLimitExceeded();
-        }
+        ex.step();
         Object target = receiver;
         if (receiver instanceof ManagedObject mo) {
             if (op.kind == Operation.Kind.INSTANCE) {

@@ -18,6 +18,8 @@ public class ManagedObject {
     private final List<Domain> parents = new ArrayList<>(1);
     /** Obligation policies attached here, by the event template they react to, in attach order. */
     private Map<EventTemplate, ObligationPolicy[]> attached;
+    /** Observers of every event that passes here (event forwarders), in the order they were added. */
+    private List<EventObserver> observers;
 
     /** For subclasses: the object is its own implementation. */
     protected ManagedObject() {
@@ -130,6 +132,30 @@ public class ManagedObject {
         }
         ObligationPolicy[] list = attached.get(template);
         return list == null ? NO_POLICIES : list;
+    }
+
+    /** Lets {@code observer} see every event delivered here, after this node's policies; once. */
+    public void addObserver(EventObserver observer) {
+        if (observers == null) {
+            observers = new ArrayList<>(1);
+        }
+        if (!observers.contains(observer)) {
+            observers.add(observer);
+        }
+    }
+
+    public void removeObserver(EventObserver observer) {
+        if (observers != null) {
+            observers.remove(observer);
+        }
+    }
+
+    void notifyObservers(Execution ex, EventTemplate template, Object[] values) {
+        if (observers != null) {
+            for (EventObserver o : List.copyOf(observers)) {
+                o.observe(ex, template, values);
+            }
+        }
     }
 
     private static final ObligationPolicy[] NO_POLICIES = new ObligationPolicy[0];

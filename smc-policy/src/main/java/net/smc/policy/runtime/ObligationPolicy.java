@@ -135,10 +135,11 @@ public final class ObligationPolicy extends ManagedObject {
         }
         if (ex.depth >= runtime.limits().maxCallDepth()) {
             // Not contained here: the send that raised the event is where the loop shows.
-            throw new PonderError("call depth limit of " + runtime.limits().maxCallDepth() + " exceeded");
+            throw new CallDepthExceeded(runtime.limits().maxCallDepth());
         }
         Object previous = ex.source;
         ex.source = this;
+        ex.firing++;
         try {
             for (Block condition : conditions) {
                 Object answer;
@@ -146,6 +147,12 @@ public final class ObligationPolicy extends ManagedObject {
                     answer = runtime.interpreter().call(ex, condition, bind(condition, event));
                 } catch (UnitAbort abort) {
                     throw abort;
+                } catch (CallDepthExceeded runaway) {
+                    if (ex.firing > 1) {
+                        throw runaway;
+                    }
+                    failed(ex, "condition", runaway.at(condition.pos()));
+                    return;
                 } catch (PonderError e) {
                     failed(ex, "condition", e.at(condition.pos()));
                     return;
@@ -165,11 +172,18 @@ public final class ObligationPolicy extends ManagedObject {
                     runtime.interpreter().call(ex, action, args);
                 } catch (UnitAbort abort) {
                     throw abort;
+                } catch (CallDepthExceeded runaway) {
+                    if (ex.firing > 1) {
+                        throw runaway; // an enclosing policy's firing reports it, once
+                    }
+                    failed(ex, "action", runaway.at(action.pos()));
+                    return;
                 } catch (PonderError e) {
                     failed(ex, "action", e.at(action.pos()));
                 }
             }
         } finally {
+            ex.firing--;
             ex.source = previous;
         }
     }
@@ -200,6 +214,6 @@ public final class ObligationPolicy extends ManagedObject {
             }
         }
         SourcePos pos = error.pos();
-        runtime.report(new Diagnostic(pos, "ObligationPolicy: unhandled " + where + " error: " + error.getMessage()));
+        runtime.report(ex, new Diagnostic(pos, "ObligationPolicy: unhandled " + where + " error: " + error.getMessage()));
     }
 }

@@ -65,7 +65,8 @@ public final class PArray {
     }
 
     @Op("addAll:")
-    public PArray addAll(PArray other) {
+    public PArray addAll(CallContext ctx, PArray other) {
+        ctx.execution().charge(other.items.size(), "Array addAll:");
         items.addAll(new ArrayList<>(other.items));
         return this;
     }
@@ -131,10 +132,11 @@ public final class PArray {
     }
 
     @Op("asHash")
-    public PHash asHash() {
+    public PHash asHash(CallContext ctx) {
         if (items.size() % 2 != 0) {
             throw new PonderError("asHash needs an even number of elements, got " + items.size());
         }
+        ctx.execution().charge(items.size(), "Array asHash");
         PHash h = new PHash();
         for (int i = 0; i < items.size(); i += 2) {
             h.put(Values.print(items.get(i)), items.get(i + 1));

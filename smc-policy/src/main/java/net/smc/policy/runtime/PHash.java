@@ -107,17 +107,20 @@ public final class PHash {
     }
 
     @Op("listNames")
-    public PArray listNames() {
+    public PArray listNames(CallContext ctx) {
+        ctx.execution().charge(map.size(), "Hash listNames");
         return new PArray(map.keySet());
     }
 
     @Op("listObjects")
-    public PArray listObjects() {
+    public PArray listObjects(CallContext ctx) {
+        ctx.execution().charge(map.size(), "Hash listObjects");
         return new PArray(map.values());
     }
 
     @Op("asArray")
-    public PArray asArray() {
+    public PArray asArray(CallContext ctx) {
+        ctx.execution().charge(2L * map.size(), "Hash asArray");
         PArray out = new PArray();
         map.forEach((k, v) -> {
             out.add(k);

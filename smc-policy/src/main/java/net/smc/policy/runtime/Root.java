@@ -16,8 +16,10 @@ public final class Root extends Domain {
 
     /** Prints the argument's printed form as one line on the cell's output; answers the argument. */
     @Op("print:")
-    public Object print(Object value) {
-        runtime().print(Values.print(value));
+    public Object print(CallContext ctx, Object value) {
+        String line = Values.print(value);
+        ctx.execution().charge(line.length(), "print:");
+        runtime().print(line);
         return value;
     }
 
@@ -46,6 +48,44 @@ public final class Root extends Domain {
     @Op("load:")
     public ManagedObject load(String name) {
         return runtime().load(name);
+    }
+
+    /** The user's arguments ({@code smc run FILE -- a b c}), as given. */
+    @Op("argsAsArray")
+    public PArray argsAsArray() {
+        return new PArray(runtime().arguments());
+    }
+
+    /**
+     * The user's arguments as a hash, as Ponder2 reads them: an argument starting with '-' is a key
+     * (without the '-'); the next argument is its value unless it starts with '-' too (then the
+     * value is ""); a value without a key before it is ignored.
+     */
+    @Op("argsAsHash")
+    public PHash argsAsHash() {
+        PHash hash = new PHash();
+        String key = null;
+        for (String arg : runtime().arguments()) {
+            if (arg.startsWith("-")) {
+                if (key != null) {
+                    hash.put(key, "");
+                }
+                key = arg.substring(1);
+            } else if (key != null) {
+                hash.put(key, arg);
+                key = null;
+            }
+        }
+        if (key != null) {
+            hash.put(key, "");
+        }
+        return hash;
+    }
+
+    /** The free memory of the Java VM, in bytes (Ponder2 also prints it and collects garbage; this does neither). */
+    @Op("memory")
+    public long memory() {
+        return Runtime.getRuntime().freeMemory();
     }
 
     @Op("exit")

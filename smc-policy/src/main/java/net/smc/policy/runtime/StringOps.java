@@ -12,16 +12,18 @@ final class StringOps {
 
     /** Concatenates the argument's printed form. */
     @Op("+")
-    static String concat(String self, Object other) {
+    static String concat(CallContext ctx, String self, Object other) {
         String tail = Values.print(other);
-        if ((long) self.length() + tail.length() > MAX_REPEAT_LENGTH) {
+        long length = (long) self.length() + tail.length();
+        if (length > MAX_REPEAT_LENGTH) {
             throw new PonderError("string longer than " + MAX_REPEAT_LENGTH + " characters");
         }
+        ctx.execution().charge(length, "String +");
         return self + tail;
     }
 
     @Op("*")
-    static String repeat(String self, BigDecimal times) {
+    static String repeat(CallContext ctx, String self, BigDecimal times) {
         Integer n = Numbers.intValue(times);
         if (n == null || n < 0) {
             throw new PonderError("cannot repeat a string " + times + " times");
@@ -29,6 +31,7 @@ final class StringOps {
         if ((long) self.length() * n > MAX_REPEAT_LENGTH) {
             throw new PonderError("string longer than " + MAX_REPEAT_LENGTH + " characters");
         }
+        ctx.execution().charge((long) self.length() * n, "String *");
         return self.repeat(n);
     }
 
@@ -40,6 +43,12 @@ final class StringOps {
     @Op("isEmpty")
     static boolean isEmpty(String self) {
         return self.isEmpty();
+    }
+
+    /** Parses the string as XML (a standard object of {@code net.smc.policy.stdlib}). */
+    @Op("asXML")
+    static Object asXML(String self) {
+        return net.smc.policy.stdlib.StandardObjects.parseXml(self);
     }
 
     /** Resolves the string as a path: absolute when it starts with '/', else from root. */

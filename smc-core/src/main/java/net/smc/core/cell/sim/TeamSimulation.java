@@ -15,11 +15,13 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
+import java.util.function.Function;
 
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
 import net.smc.core.mission.Mission;
+import net.smc.core.role.TaskProvider;
 import net.smc.core.security.Claims;
 import net.smc.core.security.Credential;
 import net.smc.core.security.IdealAuthentication;
@@ -84,6 +86,7 @@ public final class TeamSimulation {
     private final Map<String, Node> nodes = new LinkedHashMap<>();
     private final Deque<String> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
+    private final Function<String, TaskProvider> tasks;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
     private int nextPort = 5000;
@@ -103,6 +106,7 @@ public final class TeamSimulation {
     }
 
     private TeamSimulation(Builder b) {
+        this.tasks = b.tasks;
         this.mission = b.mission;
         this.repository = b.repository;
         this.seed = b.seed;
@@ -161,7 +165,7 @@ public final class TeamSimulation {
         Cell.Builder b = Cell.builder(n.spec.id(), mission, n.spec.description())
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
-                .trace(this::record);
+                .trace(this::record).tasks(tasks.apply(n.spec.id()));
         if (scheme != null) {
             b.scheme(scheme);
         }
@@ -393,6 +397,7 @@ public final class TeamSimulation {
         private LinkProfile link = LinkProfile.DEFAULT.withLatency(5, 10);
         private long mergeBoundMillis = -1;
         private Consumer<CellEvent> listener = e -> { };
+        private Function<String, TaskProvider> tasks = id -> TaskProvider.NONE;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -435,6 +440,15 @@ public final class TeamSimulation {
          */
         public Builder listener(Consumer<CellEvent> listener) {
             this.listener = Objects.requireNonNull(listener, "listener");
+            return this;
+        }
+
+        /**
+         * The tasks of each vehicle, by its id, asked each time its cell boots (so a restarted
+         * vehicle may get fresh ones); default {@link TaskProvider#NONE} for every vehicle.
+         */
+        public Builder tasks(Function<String, TaskProvider> tasksOfVehicle) {
+            this.tasks = Objects.requireNonNull(tasksOfVehicle, "tasksOfVehicle");
             return this;
         }
 

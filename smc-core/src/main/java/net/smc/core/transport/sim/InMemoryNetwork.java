@@ -41,6 +41,9 @@ public final class InMemoryNetwork {
     private final Map<Address, Counters> counters = new HashMap<>();      // looked up, or summed
     private final List<NetworkObserver> observers = new ArrayList<>();
     private RadioModel radio = RadioModel.EVERYONE;
+    private CpuModel cpu;                                                 // null: handled on arrival, at no cost
+    private long bytesPerSecond;                                          // 0: no serialisation delay
+    private final Map<Address, NodeCpu> cpus = new HashMap<>();           // looked up only
 
     /**
      * A network whose random draws come from a {@code L64X128MixRandom} generator seeded with
@@ -144,6 +147,37 @@ public final class InMemoryNetwork {
         this.radio = Objects.requireNonNull(radio, "radio");
     }
 
+    /**
+     * Charges every node's CPU for the datagrams it sends and receives, from now on: a node handles
+     * its next datagram no earlier than its CPU is free, and what it sends leaves when the work of
+     * sending is done. Without a model (the default) datagrams are handled as they arrive.
+     */
+    public void setCpuModel(CpuModel model) {
+        this.cpu = Objects.requireNonNull(model, "model");
+    }
+
+    /**
+     * Gives every node's radio a transmission rate: a datagram of {@code n} bytes occupies its
+     * sender's transmitter for {@code n / bytesPerSecond} seconds (a broadcast once), and datagrams
+     * queue behind each other. 0, the default, sends instantly. Needs a {@link CpuModel}
+     * ({@link CpuModel#FREE} will do); the shared medium's contention between senders is not modelled.
+     */
+    public void setBandwidth(long bytesPerSecond) {
+        if (bytesPerSecond < 0) {
+            throw new IllegalArgumentException("bandwidth of " + bytesPerSecond + " bytes/s is negative; it must be 0 (none) or more");
+        }
+        if (bytesPerSecond > 0 && cpu == null) {
+            throw new IllegalStateException("a bandwidth needs a CPU model; set one first (CpuModel.FREE for none)");
+        }
+        this.bytesPerSecond = bytesPerSecond;
+    }
+
+    /** The CPU time charged to the node at {@code address} by the {@link CpuModel}, in microseconds. */
+    public long cpuMicros(Address address) {
+        NodeCpu c = cpus.get(address);
+        return c == null ? 0 : c.chargedMicros;
+    }
+
     /** Adds an observer; observers are told in the order they were added. */
     public void addObserver(NetworkObserver observer) {
         observers.add(Objects.requireNonNull(observer, "observer"));
@@ -173,16 +207,30 @@ public final class InMemoryNetwork {
 
     void send(SimTransport sender, Address to, byte[] data) {
         countersOf(sender.localAddress()).sent++;
-        route(sender, to, data);
+        route(sender, to, data, departureDelay(sender, to, data), false);
     }
 
     void broadcast(SimTransport sender, byte[] data) {
         countersOf(sender.localAddress()).sent++;
+        long delay = departureDelay(sender, null, data);
         for (Address to : attached.keySet()) {   // route never attaches or detaches
             if (!to.equals(sender.localAddress())) {
-                route(sender, to, data);
+                route(sender, to, data, delay, true);
             }
         }
+    }
+
+    /** With a CPU model: charges the sender and tells how many ms from now the datagram leaves. */
+    private long departureDelay(SimTransport sender, Address to, byte[] data) {
+        if (cpu == null || sender.isCrashed()) {
+            return 0;
+        }
+        Address from = sender.localAddress();
+        NodeCpu node = cpuOf(from);
+        long now = scheduler.nowMillis() * 1_000;
+        long ready = node.charge(now, cpu.sendMicros(from, to, data));
+        long out = node.transmit(ready, data.length, bytesPerSecond);
+        return floorMillis(out) - scheduler.nowMillis();
     }
 
     void detach(SimTransport transport) {
@@ -191,7 +239,7 @@ public final class InMemoryNetwork {
 
     // ---- one copy's fate ----
 
-    private void route(SimTransport sender, Address to, byte[] data) {
+    private void route(SimTransport sender, Address to, byte[] data, long departureMillis, boolean broadcast) {
         Address from = sender.localAddress();
         countersOf(from).copies++;
         if (sender.isCrashed()) {
@@ -211,16 +259,62 @@ public final class InMemoryNetwork {
             drop(from, to, DropReason.LOSS, data, to);
             return;
         }
-        scheduleArrival(from, to, data, links.delayMillis(profile));
+        scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast);
         if (links.duplicated(profile)) {
             countersOf(from).copies++;
             countersOf(to).duplicated++;
-            scheduleArrival(from, to, data, links.delayMillis(profile));
+            scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast);
         }
     }
 
-    private void scheduleArrival(Address from, Address to, byte[] data, long delayMillis) {
-        scheduler.schedule(delayMillis, () -> arrive(from, to, data));
+    private void scheduleArrival(Address from, Address to, byte[] data, long delayMillis, boolean broadcast) {
+        if (cpu == null) {
+            scheduler.schedule(delayMillis, () -> arrive(from, to, data));
+        } else {
+            scheduler.schedule(delayMillis, () -> queue(from, to, data, broadcast));
+        }
+    }
+
+    // ---- with a CPU model: an inbox per node, one datagram worked on at a time ----
+
+    private void queue(Address from, Address to, byte[] data, boolean broadcast) {
+        NodeCpu node = cpuOf(to);
+        node.inbox.addLast(new NodeCpu.Waiting(from, data, broadcast, scheduler.nowMillis() * 1_000));
+        if (!node.draining) {
+            node.draining = true;
+            scheduler.schedule(untilMillis(node.busyUntilMicros), () -> work(to, node));
+        }
+    }
+
+    /**
+     * The CPU is free: it takes the oldest waiting datagram, and the cell gets it when the work is
+     * done. Times are kept in microseconds and the cell acts in the millisecond the work ends in
+     * (the clock's resolution), so that costs below a millisecond add up without rounding.
+     */
+    private void work(Address at, NodeCpu node) {
+        NodeCpu.Waiting w = node.inbox.pollFirst();
+        long done = node.charge(w.arrivedMicros(), cpu.receiveMicros(at, w.from(), w.data(), w.broadcast()));
+        scheduler.schedule(untilMillis(done), () -> {
+            arrive(w.from(), at, w.data());
+            if (node.inbox.isEmpty()) {
+                node.draining = false;
+            } else {
+                scheduler.schedule(untilMillis(node.busyUntilMicros), () -> work(at, node));
+            }
+        });
+    }
+
+    /** Milliseconds from now to the millisecond that holds {@code micros} (0 when it is now or past). */
+    private long untilMillis(long micros) {
+        return Math.max(0, floorMillis(micros) - scheduler.nowMillis());
+    }
+
+    private NodeCpu cpuOf(Address address) {
+        return cpus.computeIfAbsent(address, a -> new NodeCpu());
+    }
+
+    private static long floorMillis(long micros) {
+        return Math.floorDiv(micros, 1_000);
     }
 
     private void arrive(Address from, Address to, byte[] data) {

@@ -1,0 +1,229 @@
+package net.smc.demo;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+
+import net.smc.core.cell.Scheme;
+import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionLoader;
+import net.smc.policy.PolicyRepository;
+import net.smc.sim.experiment.Calibration;
+import net.smc.sim.experiment.CpuCosts;
+import net.smc.sim.experiment.GeneratedMission;
+import net.smc.sim.experiment.MissionGenerator;
+import net.smc.sim.experiment.RadioNetwork;
+import net.smc.sim.experiment.SetupResult;
+import net.smc.sim.experiment.SetupTimeCsv;
+import net.smc.sim.experiment.SetupTimeRun;
+import net.smc.sim.experiment.TreeShape;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code smc experiment setup-time}: the paper's Fig. 8. For each number of roles a mission is
+ * generated ({@link MissionGenerator}), and each scheme's team is set up {@code --runs} times on the
+ * simulated radio network ({@link SetupTimeRun}), seeds {@code --seed + run}. Writes
+ * {@code setup-time.csv}, {@code setup-time.png} and the CPU costs used ({@code costs.properties}) in
+ * {@code --out}; shows a progress bar on standard error and a summary on standard output.
+ */
+@Command(name = "setup-time", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
+        description = {"Measures the mission set-up time against the number of roles (the paper's Fig. 8), for the "
+                + "distributed and the centralised scheme, on a simulated ad-hoc radio network with each cell's CPU "
+                + "charged from costs measured on this machine (or read with --costs).",
+            "Writes DIR/setup-time.csv (one row per run), DIR/setup-time.png (median and p10-p90 band per scheme) "
+                    + "and DIR/costs.properties."},
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {"0:every run finished (a run whose roles did not all start is a row with an empty setup_ms)",
+            "2:usage error"})
+final class SetupTimeCommand implements Callable<Integer> {
+    private final Io io;
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--roles", split = ",", paramLabel = "N", defaultValue = "5,10,20,50,100,200,500,1000",
+            description = "Numbers of roles, the commander's included (default: ${DEFAULT-VALUE}).")
+    List<Integer> roles;
+
+    @Option(names = "--schemes", split = ",", paramLabel = "SCHEME", defaultValue = "distributed,centralised",
+            description = "distributed, centralised or both (default: ${DEFAULT-VALUE}).")
+    List<String> schemes;
+
+    @Option(names = "--runs", defaultValue = "20", description = "Runs per point (default: ${DEFAULT-VALUE}).")
+    int runs;
+
+    @Option(names = "--seed", defaultValue = "1", description = "Seed of the first run (default: ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "Where the results go (created).")
+    Path out;
+
+    @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp",
+            description = "sim: the simulated radio network (default). udp is not available yet.")
+    String transport;
+
+    @Option(names = "--depth", defaultValue = "4", description = "Levels of the management tree (default: ${DEFAULT-VALUE}).")
+    int depth;
+
+    @Option(names = "--fan-out", paramLabel = "F",
+            description = "Children per manager (default: the smallest that holds the roles in --depth levels).")
+    Integer fanOut;
+
+    @Option(names = "--costs", paramLabel = "FILE",
+            description = "CPU costs to use (a costs.properties of an earlier run) instead of measuring them.")
+    Path costsFile;
+
+    @Option(names = "--limit", defaultValue = "300000", paramLabel = "MS",
+            description = "Simulated time after which a run that has not set up is given up (default: ${DEFAULT-VALUE}).")
+    long limitMillis;
+
+    @Option(names = "--policies", defaultValue = "policies", paramLabel = "DIR",
+            description = "The project's policy repository, for boot/events.p2 (default: ${DEFAULT-VALUE}).")
+    Path policies;
+
+    SetupTimeCommand(Io io) {
+        this.io = io;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        List<Scheme> schemeList = schemes();
+        checkArguments();
+        Path dir = io.workingDir().resolve(out);
+        Path boot = io.workingDir().resolve(policies).resolve("boot/events.p2");
+        if (!Files.isRegularFile(boot)) {
+            throw new ParameterException(spec.commandLine(), "--policies " + policies + ": no boot/events.p2 in it; "
+                    + "it must be the project's policies/ folder");
+        }
+        Files.createDirectories(dir);
+        Map<Integer, TreeShape> shapes = new LinkedHashMap<>();
+        for (int n : roles) {
+            try {
+                shapes.put(n, fanOut == null ? TreeShape.of(n, depth) : new TreeShape(n, depth, fanOut));
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), "--roles " + n + ": " + e.getMessage());
+            }
+        }
+        Path work = Files.createTempDirectory("smc-setup-time");
+        CpuCosts costs;
+        if (costsFile != null) {
+            try {
+                costs = CpuCosts.load(io.workingDir().resolve(costsFile));
+            } catch (IOException | IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), "--costs " + costsFile + ": " + e.getMessage());
+            }
+        } else {
+            io.stderr().println("calibrating: measuring the CPU cost of each operation ...");
+            io.stderr().flush();
+            costs = Calibration.measure(boot, MissionGenerator.write(TreeShape.of(20, 4), work.resolve("calibration"), boot));
+        }
+        costs.save(dir.resolve("costs.properties"));
+        RadioNetwork radio = RadioNetwork.ADHOC_80211;
+        io.stdout().println("network: " + radio);
+        io.stdout().println("CPU costs: " + costs);
+        io.stdout().flush();
+
+        List<SetupResult> results = new ArrayList<>();
+        int total = shapes.size() * schemeList.size() * runs;
+        long t0 = System.nanoTime();
+        try (Writer csv = Files.newBufferedWriter(dir.resolve("setup-time.csv"))) {
+            SetupTimeCsv.writeHeader(csv);
+            for (TreeShape shape : shapes.values()) {
+                GeneratedMission g = MissionGenerator.write(shape, work.resolve("m" + shape.roles()), boot);
+                MissionLoader loader = new MissionLoader(new PolicyRepository(g.repository()));
+                for (Scheme scheme : schemeList) {
+                    Mission mission = loader.load(g.instanceFile(scheme));
+                    long pointStart = System.nanoTime();
+                    for (int run = 1; run <= runs; run++) {
+                        progress(results.size(), total, shape.roles(), scheme, t0);
+                        SetupResult r = SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis);
+                        results.add(r);
+                        SetupTimeCsv.writeRow(csv, r);
+                        csv.flush();
+                    }
+                    summary(results, shape.roles(), scheme, (System.nanoTime() - pointStart) / 1e9);
+                }
+            }
+        }
+        progress(results.size(), total, 0, null, t0);
+        io.stderr().println();
+        io.stderr().flush();
+        SetupTimeChart.write(results, dir.resolve("setup-time.png"));
+        io.stdout().println("wrote " + dir.resolve("setup-time.csv") + " and " + dir.resolve("setup-time.png"));
+        io.stdout().flush();
+        return 0;
+    }
+
+    private List<Scheme> schemes() {
+        List<Scheme> list = new ArrayList<>();
+        for (String s : schemes) {
+            switch (s.trim().toLowerCase(Locale.ROOT)) {
+                case "distributed" -> list.add(Scheme.DISTRIBUTED);
+                case "centralised", "centralized" -> list.add(Scheme.CENTRALISED);
+                default -> throw new ParameterException(spec.commandLine(), "--schemes: unknown scheme '" + s
+                        + "'; the schemes are distributed and centralised");
+            }
+        }
+        return list;
+    }
+
+    private void checkArguments() {
+        if (runs < 1) {
+            throw new ParameterException(spec.commandLine(), "--runs " + runs + ": it must be 1 or more");
+        }
+        if (roles.isEmpty()) {
+            throw new ParameterException(spec.commandLine(), "--roles: give at least one number of roles");
+        }
+        if (limitMillis < 1) {
+            throw new ParameterException(spec.commandLine(), "--limit " + limitMillis + ": it must be 1 ms or more");
+        }
+        if (transport.equals("udp")) {
+            throw new ParameterException(spec.commandLine(), "--transport udp is not available yet; only sim is "
+                    + "(the loopback UDP comparison is still to be written)");
+        }
+        if (!transport.equals("sim")) {
+            throw new ParameterException(spec.commandLine(), "--transport " + transport + ": it must be sim or udp");
+        }
+    }
+
+    private void progress(int done, int total, int roles, Scheme scheme, long t0) {
+        int width = 30;
+        int filled = total == 0 ? width : done * width / total;
+        String what = scheme == null ? "done" : roles + " roles, " + scheme.name().toLowerCase(Locale.ROOT);
+        io.stderr().printf(Locale.ROOT, "\r[%s%s] %d/%d runs  %-28s %6.0f s", "#".repeat(filled),
+                " ".repeat(width - filled), done, total, what, (System.nanoTime() - t0) / 1e9);
+        io.stderr().flush();
+    }
+
+    private void summary(List<SetupResult> results, int roles, Scheme scheme, double wallSeconds) {
+        List<Double> times = new ArrayList<>();
+        int incomplete = 0;
+        for (SetupResult r : results) {
+            if (r.roles() == roles && r.scheme() == scheme) {
+                if (r.complete()) {
+                    times.add(r.setupMillis());
+                } else {
+                    incomplete++;
+                }
+            }
+        }
+        double[] v = SetupTimeChart.sortedCopy(times);
+        io.stderr().print("\r");
+        io.stdout().printf(Locale.ROOT, "%5d roles %-12s median %8.0f ms  p10 %8.0f  p90 %8.0f  (%d runs, %d incomplete, %.1f s wall)%n",
+                roles, scheme.name().toLowerCase(Locale.ROOT), v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.5),
+                v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.1), v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.9),
+                v.length, incomplete, wallSeconds);
+        io.stdout().flush();
+    }
+}

@@ -1,0 +1,86 @@
+package net.smc.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import net.smc.sim.experiment.CpuCosts;
+import net.smc.sim.experiment.SetupTimeCsv;
+
+class SetupTimeCommandTest {
+    @TempDir
+    Path dir;
+
+    /** The project's policy repository, from the module's or the project's directory. */
+    private static Path policies() {
+        Path p = Path.of("..", "policies");
+        return Files.isDirectory(p) ? p.toAbsolutePath() : Path.of("policies").toAbsolutePath();
+    }
+
+    private Path costs() throws Exception {
+        Path file = dir.resolve("given-costs.properties");
+        new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500).save(file);
+        return file;
+    }
+
+    @Test
+    void smallExperiment_writesOneCsvRowPerRun_andTheChart() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5,20", "--runs", "2", "--seed", "3",
+                "--out", "out", "--costs", costs().toString(), "--policies", policies().toString());
+        assertEquals(0, r.status(), r.err());
+        List<String> csv = Files.readAllLines(dir.resolve("out/setup-time.csv"));
+        assertEquals(SetupTimeCsv.HEADER, csv.get(0));
+        assertEquals(1 + 2 * 2 * 2, csv.size(), String.join("\n", csv));
+        for (String row : csv.subList(1, csv.size())) {
+            String[] f = row.split(",", -1);
+            assertEquals(9, f.length, row);
+            assertTrue(!f[4].isEmpty(), "every role started: " + row);
+            assertEquals(Integer.parseInt(f[0]) - 1, Integer.parseInt(f[8]), row);
+        }
+        assertTrue(Files.size(dir.resolve("out/setup-time.png")) > 1_000);
+        assertTrue(Files.isRegularFile(dir.resolve("out/costs.properties")));
+        assertTrue(r.err().contains("8/8 runs"), r.err());
+    }
+
+    @Test
+    void unknownScheme_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--schemes", "anarchic", "--out", "o");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("unknown scheme 'anarchic'"), r.err());
+    }
+
+    @Test
+    void tooFewRolesForTheDepth_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "3", "--out", "o",
+                "--policies", policies().toString());
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--roles 3") && r.err().contains("depth 4"), r.err());
+    }
+
+    @Test
+    void zeroRuns_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--runs", "0", "--out", "o");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--runs 0"), r.err());
+    }
+
+    @Test
+    void udpTransport_isRefusedWithTheReason() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--transport", "udp", "--out", "o");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--transport udp is not available yet"), r.err());
+    }
+
+    @Test
+    void noExperiment_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("no experiment given"), r.err());
+    }
+}

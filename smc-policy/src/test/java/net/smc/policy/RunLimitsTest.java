@@ -1,0 +1,141 @@
+package net.smc.policy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+import org.junit.jupiter.api.Test;
+
+/** The bounds of {@link Limits} on one run: errors reported, characters and elements built, time taken. */
+class RunLimitsTest {
+    private final List<Diagnostic> errors = new ArrayList<>();
+    private final List<String> output = new ArrayList<>();
+
+    private Cell cell(Limits limits) {
+        return Cell.builder().limits(limits).errors(errors::add).output(output::add).build();
+    }
+
+    private List<String> messages() {
+        return errors.stream().map(Diagnostic::message).toList();
+    }
+
+    @Test
+    void eventStorm_isCutAtItsFirstOverflowAndReportedOnce() {
+        Cell cell = cell(Limits.DEFAULT.withMaxCallDepth(50));
+
+        RunResult result = cell.run("storm.p2", """
+                t := root/factory/event create: #().
+                p := root/factory/ecapolicy create.
+                root/policy at: "p" put: p.
+                p event: t; action: [t create: #(). t create: #(). t create: #()]; active: true.
+                t create: #().
+                root print: "after".
+                """);
+
+        assertTrue(result.ok(), messages().toString());
+        assertEquals(List.of("ObligationPolicy: unhandled action error: call depth limit of 50 exceeded"), messages());
+        assertEquals(List.of("after"), output);
+    }
+
+    @Test
+    void errorsBeyondThePerRunLimit_areCountedNotReported() {
+        Cell cell = cell(Limits.DEFAULT.withMaxErrorsPerRun(3));
+
+        RunResult result = cell.run("many.p2", """
+                t := root/factory/event create: #().
+                p := root/factory/ecapolicy create.
+                p event: t; action: [nil frob]; active: true.
+                #(1 2 3 4 5 6 7 8 9 10) do: [:i | t create: #()].
+                """);
+
+        assertEquals(4, errors.size(), messages().toString());
+        assertEquals("7 more errors of this run suppressed (only the first 3 are reported)", messages().get(3));
+        assertEquals(4, result.diagnostics().size(), "the run keeps only what it reported");
+        errors.clear();
+        cell.run("next.p2", "root/factory/event create: #(). nil frob.");
+        assertEquals(1, errors.size(), "each run has its own count: " + messages());
+    }
+
+    @Test
+    void errorsOfARaiseFromJava_areBoundedToo() {
+        Cell cell = cell(Limits.DEFAULT.withMaxErrorsPerRun(2));
+        cell.run("boot.p2", """
+                root/event at: "e" put: (root/factory/event create: #()).
+                #(1 2 3 4 5) do: [:i | root/factory/ecapolicy create event: root/event/e; action: [nil frob]; active: true].
+                """);
+
+        cell.raise("root/event/e");
+
+        assertEquals(3, errors.size(), messages().toString());
+        assertTrue(messages().get(2).startsWith("3 more errors of this run suppressed"), messages().toString());
+    }
+
+    @Test
+    void buildingHugeStringsOneSendAtATime_endsAtTheBuiltLimit() {
+        Cell cell = cell(Limits.DEFAULT.withMaxBuiltPerRun(100_000));
+
+        RunResult result = cell.run("grow.p2", """
+                h := #() asHash.
+                h at: "s" put: "x" * 1000.
+                [true] whileTrue: [(h at: "s") + "x"].
+                """);
+
+        assertEquals(RunResult.Status.RUNTIME_ERROR, result.status());
+        assertEquals(List.of("built limit of 100000 characters and elements per run exceeded (by String +)"),
+                messages());
+    }
+
+    @Test
+    void bulkCopiesAndPrinting_countAgainstTheBuiltLimit() {
+        Cell cell = cell(Limits.DEFAULT.withMaxBuiltPerRun(1_000));
+
+        cell.run("copy.p2", """
+                a := #(1 2 3 4 5 6 7 8 9 10).
+                [true] whileTrue: [a addAll: a].
+                """);
+        cell.run("print.p2", """
+                s := "y" * 100.
+                [true] whileTrue: [root print: s].
+                """);
+
+        assertEquals(2, errors.size(), messages().toString());
+        assertTrue(messages().get(0).endsWith("(by Array addAll:)"), messages().toString());
+        assertTrue(messages().get(1).endsWith("(by print:)"), messages().toString());
+        assertEquals(9, output.size(), "s * 100 took 100 of the 1000; the tenth print would pass the limit");
+    }
+
+    @Test
+    void aRunLongerThanTheTimeLimitByTheInjectedClock_ends() {
+        AtomicLong now = new AtomicLong();
+        Cell cell = Cell.builder().limits(Limits.DEFAULT.withMaxRunMillis(5_000)).errors(errors::add)
+                .clock(() -> now.addAndGet(1)).build();
+
+        RunResult result = cell.run("spin.p2", "[true] whileTrue: [1].");
+
+        assertEquals(RunResult.Status.RUNTIME_ERROR, result.status());
+        assertEquals(1, errors.size(), messages().toString());
+        assertTrue(messages().get(0).startsWith("time limit of 5000 ms per run exceeded"), messages().toString());
+    }
+
+    @Test
+    void aClockThatDoesNotMove_neverTripsTheTimeLimit() {
+        Cell cell = Cell.builder().limits(Limits.DEFAULT.withMaxRunMillis(1).withMaxSteps(100_000))
+                .errors(errors::add).build();
+
+        cell.run("spin.p2", "[true] whileTrue: [1].");
+
+        assertEquals(List.of("step limit of 100000 sends exceeded"), messages());
+    }
+
+    @Test
+    void limits_areValidated() {
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> Limits.DEFAULT.withMaxErrorsPerRun(0));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> Limits.DEFAULT.withMaxBuiltPerRun(0));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> Limits.DEFAULT.withMaxRunMillis(-1));
+    }
+}

@@ -1,0 +1,147 @@
+package net.smc.sim.experiment;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.GeneralSecurityException;
+import java.security.KeyPair;
+import java.security.KeyPairGenerator;
+import java.security.SecureRandom;
+
+import javax.crypto.KeyAgreement;
+import javax.crypto.Mac;
+import javax.crypto.spec.SecretKeySpec;
+
+import net.smc.core.message.Envelope;
+import net.smc.core.message.Heartbeat;
+import net.smc.core.message.MessageDecoder;
+import net.smc.core.message.MessageEncoder;
+import net.smc.core.message.PolicyReply;
+import net.smc.core.security.SigningKey;
+import net.smc.core.security.VerificationKey;
+import net.smc.policy.Cell;
+import net.smc.policy.RunResult;
+
+/**
+ * Measures, on this machine, what the operations {@link CpuCharge} charges cost this engine (the
+ * project's Ed25519 keys and codec, the JDK's HMAC-SHA256 and X25519 as the security layer uses
+ * them, the PonderTalk engine loading a generated role-mission and offering an event to policies):
+ * the calibration step of the set-up time experiment. Each operation is warmed up for half a second
+ * (so the JIT has compiled it), then timed in several batches of at least 50 ms, and the fastest
+ * batch is kept: on a machine shared with other work the fastest batch is the one least slowed by
+ * it, closest to what the operation costs a CPU of its own. This is the one
+ * part of the experiment that reads the wall clock; the costs it returns are then applied
+ * deterministically ({@link CpuCosts#save}, {@link CpuCosts#load}).
+ */
+public final class Calibration {
+    private static final int BATCHES = 5;
+    private static final long WARM_UP_NANOS = 500_000_000L;
+    private static final long BATCH_NANOS = 50_000_000L;
+
+    private Calibration() {
+    }
+
+    /**
+     * Measures every cost.
+     *
+     * @param bootEvents the project's {@code policies/boot/events.p2}
+     * @param mission    a generated mission whose first manager's role-mission is the policy text loaded
+     */
+    public static CpuCosts measure(Path bootEvents, GeneratedMission mission) throws Exception {
+        SigningKey key = SigningKey.generate(new SecureRandom(new byte[] {1}));
+        VerificationKey pub = key.verificationKey();
+        byte[] msg = new byte[200];
+        byte[] sig = key.sign(msg);
+        double sign = time(20, () -> key.sign(msg));
+        double verify = time(20, () -> pub.verify(msg, sig));
+
+        KeyPairGenerator x = KeyPairGenerator.getInstance("X25519");
+        KeyPair a = x.generateKeyPair();
+        KeyPair b = x.generateKeyPair();
+        double agree = time(20, () -> {
+            KeyAgreement ka = KeyAgreement.getInstance("X25519");
+            ka.init(a.getPrivate());
+            ka.doPhase(b.getPublic(), true);
+            ka.generateSecret();
+        });
+
+        Mac mac = Mac.getInstance("HmacSHA256");
+        mac.init(new SecretKeySpec(new byte[32], "HmacSHA256"));
+        byte[] small = new byte[64];
+        byte[] large = new byte[1_400];
+        double macSmall = time(100, () -> mac.doFinal(small));
+        double macLarge = time(100, () -> mac.doFinal(large));
+        double macPerByte = Math.max(0, (macLarge - macSmall) / (large.length - small.length));
+        double macFixed = Math.max(0, macSmall - macPerByte * small.length);
+
+        MessageEncoder encoder = new MessageEncoder();
+        MessageDecoder decoder = new MessageDecoder(() -> 0L);
+        Envelope hb = new Envelope("b0l1n0", 1, new Heartbeat("b0l1", 1, 0));
+        Envelope policy = new Envelope("b0l1n0", 2, new PolicyReply(1, "policy:/roles/b0l1/mission", 1, "x".repeat(1_200)));
+        int hbBytes = encoder.datagrams(hb).get(0).length;
+        int policyBytes = encoder.datagrams(policy).get(0).length;
+        double codecSmall = time(100, () -> decoder.decode(encoder.datagrams(hb).get(0))) / 2;
+        double codecLarge = time(100, () -> decoder.decode(encoder.datagrams(policy).get(0))) / 2;
+        double codecPerByte = Math.max(0, (codecLarge - codecSmall) / (policyBytes - hbBytes));
+        double codecFixed = Math.max(0, codecSmall - codecPerByte * hbBytes);
+
+        String boot = Files.readString(bootEvents);
+        RoleType manager = mission.roles().get(0);
+        String text = Files.readString(mission.repository().resolve("roles/" + manager.name() + "/mission.p2"));
+        String domains = "root at: \"role\" put: root/factory/domain create.\n"
+                + "root/role at: \"" + manager.name() + "\" put: root/factory/domain create.\n"
+                + "root/role/" + manager.name() + " at: \"policy\" put: root/factory/domain create.\n";
+        double loadPerByte = time(20, () -> {
+            Cell cell = Cell.builder().build();
+            check(cell.run("boot", boot));
+            check(cell.run("domains", domains));
+            check(cell.run("mission", text));
+        }) / text.length();
+
+        int policies = 20;
+        Cell cell = Cell.builder().build();
+        check(cell.run("boot", boot));
+        StringBuilder conditions = new StringBuilder();
+        for (int i = 0; i < policies; i++) {
+            conditions.append("p := root/factory/ecapolicy create.\n")
+                    .append("p event: /event/newUAV; condition: [:uav | uav == \"nobody").append(i)
+                    .append("\"]; action: [:uav | root print: uav]. p active: true.\n");
+        }
+        check(cell.run("conditions", conditions.toString()));
+        double raise = time(50, () -> cell.raise("root/event/newUAV", "newUAV", "b0l1n0", "summary", "credential"));
+        double condition = raise / policies;
+
+        return new CpuCosts(sign, verify, agree, macFixed, macPerByte, codecFixed, codecPerByte, loadPerByte, condition);
+    }
+
+    private static void check(RunResult r) {
+        if (!r.ok()) {
+            throw new IllegalStateException("calibration policy failed: " + r.diagnostics());
+        }
+    }
+
+    /** The fastest batch's time of one call, in ns ({@code minCalls}: at least this many calls per batch). */
+    private static double time(int minCalls, Work work) throws Exception {
+        long warm = System.nanoTime();
+        while (System.nanoTime() - warm < WARM_UP_NANOS) {
+            work.run();
+        }
+        double best = Double.MAX_VALUE;
+        for (int b = 0; b < BATCHES; b++) {
+            long t0 = System.nanoTime();
+            long calls = 0;
+            long elapsed;
+            do {
+                work.run();
+                calls++;
+                elapsed = System.nanoTime() - t0;
+            } while (calls < minCalls || elapsed < BATCH_NANOS);
+            best = Math.min(best, elapsed / (double) calls);
+        }
+        return best;
+    }
+
+    @FunctionalInterface
+    private interface Work {
+        void run() throws GeneralSecurityException, Exception;
+    }
+}

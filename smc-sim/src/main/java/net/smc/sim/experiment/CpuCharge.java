@@ -1,0 +1,136 @@
+package net.smc.sim.experiment;
+
+import java.nio.charset.StandardCharsets;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.function.ToIntFunction;
+
+import net.smc.core.message.MessageType;
+import net.smc.core.message.WireFormat;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.sim.CpuModel;
+
+/**
+ * The CPU a cell spends per datagram, from measured per-operation {@link CpuCosts}, for the
+ * protection real traffic gets ({@code net.smc.core.security}), although the simulation itself uses
+ * ideal authentication for speed:
+ * <ul>
+ *   <li>every datagram sent or received is encoded or decoded (fixed + per byte);</li>
+ *   <li>a broadcast is signed (Ed25519) by its sender and verified by each receiver; a unicast is
+ *       MAC'd (HMAC-SHA256) by both ends;</li>
+ *   <li>the first datagram between two cells costs a key agreement (X25519) at each end, a signature
+ *       at the sender and the credential's verification at the receiver;</li>
+ *   <li>a {@code PolicyReply} costs its receiver the parsing and loading of the policy text it
+ *       carries (per byte of payload);</li>
+ *   <li>a {@code DiscoveryReply} costs its receiver one condition per {@code newUAV} policy it runs
+ *       (given by {@code newUavPolicies} from the receiving vehicle's id).</li>
+ * </ul>
+ * Vehicles are known by the sender field of the datagrams they send. Also counts the datagrams and
+ * bytes sent (a broadcast once: one radio transmission). Deterministic: no clock, no randomness.
+ */
+public final class CpuCharge implements CpuModel {
+    private static final int TYPE_OFFSET = 3;
+    private static final int SENDER_LENGTH_OFFSET = 4;
+
+    private final CpuCosts costs;
+    private final ToIntFunction<String> newUavPolicies;
+    private final Map<Address, String> vehicles = new HashMap<>();
+    private final Set<Pair> contacts = new HashSet<>();
+    private long datagrams;
+    private long bytes;
+
+    /**
+     * @param newUavPolicies how many {@code newUAV} policies the vehicle with this id runs
+     */
+    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies) {
+        this.costs = Objects.requireNonNull(costs, "costs");
+        this.newUavPolicies = Objects.requireNonNull(newUavPolicies, "newUavPolicies");
+    }
+
+    @Override
+    public long sendMicros(Address at, Address to, byte[] data) {
+        datagrams++;
+        bytes += data.length;
+        vehicles.computeIfAbsent(at, a -> sender(data));
+        double ns = codec(data.length);
+        if (to == null) {
+            ns += costs.signNanos();
+        } else {
+            ns += mac(data.length);
+            if (contacts.add(pair(at, to))) {
+                ns += costs.signNanos() + costs.agreeNanos();
+            }
+        }
+        return micros(ns);
+    }
+
+    @Override
+    public long receiveMicros(Address at, Address from, byte[] data, boolean broadcast) {
+        double ns = codec(data.length) + (broadcast ? costs.verifyNanos() : mac(data.length));
+        if (contacts.add(pair(at, from))) {
+            ns += costs.verifyNanos() + costs.agreeNanos();
+        }
+        int type = type(data);
+        if (type == MessageType.POLICY_REPLY.code()) {
+            ns += costs.loadNanosPerByte() * data.length;
+        } else if (type == MessageType.DISCOVERY_REPLY.code()) {
+            String vehicle = vehicles.get(at);
+            ns += costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle));
+        }
+        return micros(ns);
+    }
+
+    /** Datagrams sent so far (a broadcast counts once). */
+    public long datagrams() {
+        return datagrams;
+    }
+
+    /** Bytes of the datagrams sent so far. */
+    public long bytes() {
+        return bytes;
+    }
+
+    private double codec(int length) {
+        return costs.codecNanos() + costs.codecNanosPerByte() * length;
+    }
+
+    private double mac(int length) {
+        return costs.macNanos() + costs.macNanosPerByte() * length;
+    }
+
+    /** The message type of a datagram; for a fragment, the type of the message it is a piece of. */
+    static int type(byte[] data) {
+        if (data.length <= SENDER_LENGTH_OFFSET) {
+            return -1;
+        }
+        int type = data[TYPE_OFFSET] & 0xFF;
+        if (type != WireFormat.FRAGMENT_CODE) {
+            return type;
+        }
+        int payload = SENDER_LENGTH_OFFSET + 1 + (data[SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
+        return payload < data.length ? data[payload] & 0xFF : -1;
+    }
+
+    private static String sender(byte[] data) {
+        if (data.length <= SENDER_LENGTH_OFFSET) {
+            return "";
+        }
+        int n = data[SENDER_LENGTH_OFFSET] & 0xFF;
+        return n <= data.length - SENDER_LENGTH_OFFSET - 1
+                ? new String(data, SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
+    }
+
+    private record Pair(Address at, Address other) {
+    }
+
+    private static Pair pair(Address at, Address other) {
+        return new Pair(at, other);
+    }
+
+    private static long micros(double nanos) {
+        return Math.round(nanos / 1_000);
+    }
+}

@@ -1,0 +1,83 @@
+package net.smc.sim.experiment;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import net.smc.core.cell.Scheme;
+import net.smc.core.cell.sim.SimVehicle;
+
+/**
+ * A mission written by {@link MissionGenerator}: its files, its roles and a team of vehicles that
+ * fills every seat, one vehicle per seat, each able to hold exactly its own role.
+ *
+ * @param directory  where it was written: {@code missions/} and {@code policies/} (the repository)
+ * @param shape      the shape of its management tree
+ * @param roles      its roles but the commander, level by level
+ */
+public record GeneratedMission(Path directory, TreeShape shape, List<RoleType> roles) {
+    /** The commander's vehicle id. */
+    public static final String COMMANDER = "cdr";
+
+    public GeneratedMission {
+        roles = List.copyOf(roles);
+    }
+
+    /** The policy repository: {@code boot/} and {@code roles/ROLE/{mission,auth}.p2}. */
+    public Path repository() {
+        return directory.resolve("policies");
+    }
+
+    public Path classFile() {
+        return directory.resolve("missions").resolve("generated.class.xml");
+    }
+
+    /** The instance of the scheme: the same roles, the scheme parameter and the commander's policies differ. */
+    public Path instanceFile(Scheme scheme) {
+        return directory.resolve("missions").resolve("generated-" + MissionGenerator.schemeName(scheme) + ".instance.xml");
+    }
+
+    /** The number of roles (seats), the commander's included. */
+    public int seats() {
+        return 1 + roles.stream().mapToInt(RoleType::seats).sum();
+    }
+
+    /** The team: the commander first, then one vehicle per seat, role by role. */
+    public List<SimVehicle> vehicles() {
+        List<SimVehicle> team = new ArrayList<>(seats());
+        team.add(new SimVehicle(COMMANDER, Set.of(MissionGenerator.RADIO), Set.of(), true, false));
+        for (RoleType r : roles) {
+            for (int s = 0; s < r.seats(); s++) {
+                team.add(new SimVehicle(r.vehicle(s), Set.of(MissionGenerator.RADIO, r.resource()), Set.of(), false, false));
+            }
+        }
+        return team;
+    }
+
+    /** The roles a holder of {@code role} discovers and assigns under {@code scheme}. */
+    public List<RoleType> managedBy(String role, Scheme scheme) {
+        if (scheme == Scheme.CENTRALISED) {
+            return role.equals("commander") ? roles : List.of();
+        }
+        return roles.stream().filter(r -> r.manager().equals(role)).toList();
+    }
+
+    /**
+     * How many {@code newUAV} obligation policies the vehicle {@code vehicle} runs when it holds the
+     * role it was built for (one per role it may assign): what one discovery reply costs it.
+     */
+    public int newUavPolicies(String vehicle, Scheme scheme) {
+        String role = vehicle.equals(COMMANDER) ? "commander" : RoleType.roleOfVehicle(vehicle).orElse("");
+        return managedBy(role, scheme).size();
+    }
+
+    /** Role name to role, for look-ups. */
+    public Map<String, RoleType> byName() {
+        Map<String, RoleType> m = new LinkedHashMap<>();
+        roles.forEach(r -> m.put(r.name(), r));
+        return m;
+    }
+}

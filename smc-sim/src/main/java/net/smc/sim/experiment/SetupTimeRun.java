@@ -1,0 +1,89 @@
+package net.smc.sim.experiment;
+
+import java.util.HashSet;
+import java.util.Objects;
+import java.util.Set;
+import java.util.function.Consumer;
+
+import net.smc.core.cell.CellEvent;
+import net.smc.core.cell.Scheme;
+import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.core.mission.Mission;
+import net.smc.core.transport.Address;
+import net.smc.core.transport.sim.InMemoryNetwork;
+import net.smc.policy.PolicyRepository;
+
+/**
+ * One run of the set-up time experiment on the simulated network: a generated mission's whole team
+ * (the commander and one vehicle per seat) starts at once on a {@link RadioNetwork}, with every
+ * cell's CPU charged by {@link CpuCharge}; the set-up time is, as the paper's section V defines it,
+ * from the commander's start (its {@code COMMANDING} event) until every role is started: each seat's
+ * vehicle has had the assignment, fetched the role's policies from its manager, loaded them and
+ * started the role ({@code ACCEPTED}, which a cell reports only after the role is loaded). Times are
+ * simulated milliseconds; one seed replays the run exactly.
+ *
+ * <pre>{@code
+ * SetupResult r = SetupTimeRun.run(generated, mission, Scheme.DISTRIBUTED, 1, seed, RadioNetwork.ADHOC_80211, costs, 120_000);
+ * }</pre>
+ */
+public final class SetupTimeRun {
+    private SetupTimeRun() {
+    }
+
+    /**
+     * Runs one team until every role started or {@code limitMillis} of simulated time passed.
+     *
+     * @param mission the generated mission loaded for {@code scheme}
+     */
+    public static SetupResult run(GeneratedMission generated, Mission mission, Scheme scheme, int run, long seed,
+                                  RadioNetwork radio, CpuCosts costs, long limitMillis) {
+        Objects.requireNonNull(scheme, "scheme");
+        if (limitMillis <= 0) {
+            throw new IllegalArgumentException("time limit " + limitMillis + " ms must be above 0");
+        }
+        Progress progress = new Progress(generated.seats() - 1);
+        TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(generated.repository()), seed)
+                .vehicles(generated.vehicles()).scheme(scheme).link(radio.link()).listener(progress).build();
+        CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme));
+        InMemoryNetwork network = sim.network();
+        network.setCpuModel(charge);
+        network.setBandwidth(radio.bytesPerSecond());
+        sim.start();
+        sim.runUntil(progress::complete, limitMillis);
+        long busiest = 0;
+        for (Address a : network.attached()) {
+            busiest = Math.max(busiest, network.cpuMicros(a));
+        }
+        double setup = progress.complete() && progress.start >= 0 ? progress.end - progress.start : -1;
+        return new SetupResult(generated.seats(), scheme, "sim", run, setup, charge.datagrams(), charge.bytes(),
+                busiest / 1_000.0, progress.seats.size());
+    }
+
+    /** Follows the cells' events: the commander's start, and each seat's first acceptance. */
+    private static final class Progress implements Consumer<CellEvent> {
+        final Set<String> seats = new HashSet<>();
+        final int needed;
+        long start = -1;
+        long end = -1;
+
+        Progress(int needed) {
+            this.needed = needed;
+        }
+
+        @Override
+        public void accept(CellEvent e) {
+            if (e.kind() == CellEvent.Kind.COMMANDING && e.vehicle().equals(GeneratedMission.COMMANDER) && start < 0) {
+                start = e.timeMillis();
+            } else if (e.kind() == CellEvent.Kind.ACCEPTED) {
+                int space = e.detail().indexOf(' ');
+                if (seats.add(space < 0 ? e.detail() : e.detail().substring(0, space)) && seats.size() == needed) {
+                    end = e.timeMillis();
+                }
+            }
+        }
+
+        boolean complete() {
+            return seats.size() >= needed;
+        }
+    }
+}

@@ -1,0 +1,8 @@
+/**
+ * The set-up time experiment of the paper's section V (Fig. 8): {@link net.smc.sim.experiment.MissionGenerator}
+ * writes missions of any number of roles in a management tree of depth 4, {@link net.smc.sim.experiment.SetupTimeRun}
+ * runs one team on the simulated radio network with each cell's CPU charged to its own virtual
+ * clock ({@link net.smc.sim.experiment.CpuCharge}, costs from {@link net.smc.sim.experiment.Calibration}),
+ * and measures the time from the commander's start until every role is started.
+ */
+package net.smc.sim.experiment;

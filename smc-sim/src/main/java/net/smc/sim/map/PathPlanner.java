@@ -1,0 +1,164 @@
+package net.smc.sim.map;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import java.util.Optional;
+import java.util.PriorityQueue;
+
+/**
+ * A* on an {@link OccupancyGrid}, 8-connected without cutting corners. A cell is closed to the
+ * robot when an occupied cell lies within {@code clearance} of it (the robot's radius and a little
+ * room), or when its centre lies within an avoided zone grown by the margin and by half a cell's
+ * diagonal (so no point of an open cell is inside the zone plus margin). Unknown cells are open but
+ * cost {@link #UNKNOWN_COST} times a free one, so known routes are preferred.
+ */
+public final class PathPlanner {
+    /** The cost factor of crossing an unknown cell. */
+    public static final double UNKNOWN_COST = 1.5;
+
+    private final double clearance;
+
+    /**
+     * @param clearance metres to keep between the robot's centre and any occupied cell, not negative
+     */
+    public PathPlanner(double clearance) {
+        if (!(clearance >= 0) || !Double.isFinite(clearance)) {
+            throw new IllegalArgumentException("planner clearance " + clearance + " must be a finite number of metres, 0 or more");
+        }
+        this.clearance = clearance;
+    }
+
+    /** Which cells are closed, by {@code col + row * cols}. */
+    public boolean[] closedCells(OccupancyGrid grid, List<Zone> avoid, double margin) {
+        int cols = grid.cols();
+        int rows = grid.rows();
+        boolean[] closed = new boolean[cols * rows];
+        int reach = (int) Math.ceil(clearance / grid.resolution());
+        for (int r = 0; r < rows; r++) {
+            for (int c = 0; c < cols; c++) {
+                if (!grid.isOccupied(c, r)) {
+                    continue;
+                }
+                for (int dr = -reach; dr <= reach; dr++) {
+                    for (int dc = -reach; dc <= reach; dc++) {
+                        if (grid.inside(c + dc, r + dr)
+                                && Math.hypot(dc, dr) * grid.resolution() <= clearance + 1e-9) {
+                            closed[(c + dc) + (r + dr) * cols] = true;
+                        }
+                    }
+                }
+            }
+        }
+        double halfDiagonal = grid.resolution() * Math.sqrt(0.5);
+        for (Zone zone : avoid) {
+            for (int r = 0; r < rows; r++) {
+                for (int c = 0; c < cols; c++) {
+                    Point p = grid.centre(c, r);
+                    if (zone.contains(p.x(), p.y(), margin + halfDiagonal)) {
+                        closed[c + r * cols] = true;
+                    }
+                }
+            }
+        }
+        return closed;
+    }
+
+    /**
+     * A path from {@code start} to {@code goal}: the waypoints after the start cell, ending at the
+     * goal itself; empty when the goal is off the grid, closed, or cannot be reached. The start
+     * cell may be closed (the robot may stand close to an obstacle); it is left by the first step.
+     */
+    public Optional<List<Point>> plan(OccupancyGrid grid, Point start, Point goal, List<Zone> avoid, double margin) {
+        if (!grid.covers(goal.x(), goal.y())) {
+            return Optional.empty();
+        }
+        for (Zone zone : avoid) {
+            if (zone.contains(goal.x(), goal.y(), margin)) {
+                return Optional.empty();
+            }
+        }
+        boolean[] closed = closedCells(grid, avoid, margin);
+        int cols = grid.cols();
+        int startC = Math.max(0, Math.min(cols - 1, grid.col(start.x())));
+        int startR = Math.max(0, Math.min(grid.rows() - 1, grid.row(start.y())));
+        int goalC = grid.col(goal.x());
+        int goalR = grid.row(goal.y());
+        int s = startC + startR * cols;
+        int g = goalC + goalR * cols;
+        if (closed[g] && g != s) {
+            return Optional.empty();
+        }
+        double[] cost = new double[closed.length];
+        int[] from = new int[closed.length];
+        Arrays.fill(cost, Double.POSITIVE_INFINITY);
+        Arrays.fill(from, -1);
+        cost[s] = 0;
+        PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
+        open.add(new double[] {heuristic(startC, startR, goalC, goalR), s});
+        boolean[] done = new boolean[closed.length];
+        while (!open.isEmpty()) {
+            int cell = (int) open.poll()[1];
+            if (done[cell]) {
+                continue;
+            }
+            done[cell] = true;
+            if (cell == g) {
+                return Optional.of(waypoints(grid, from, s, g, goal));
+            }
+            int c = cell % cols;
+            int r = cell / cols;
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    if ((dc == 0 && dr == 0) || !grid.inside(c + dc, r + dr)) {
+                        continue;
+                    }
+                    int next = (c + dc) + (r + dr) * cols;
+                    if (closed[next] || done[next]) {
+                        continue;
+                    }
+                    if (dc != 0 && dr != 0 && (closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols])) {
+                        continue;
+                    }
+                    double step = (dc != 0 && dr != 0 ? Math.sqrt(2) : 1)
+                            * (grid.isKnown(c + dc, r + dr) ? 1 : UNKNOWN_COST);
+                    if (cost[cell] + step < cost[next]) {
+                        cost[next] = cost[cell] + step;
+                        from[next] = cell;
+                        open.add(new double[] {cost[next] + heuristic(c + dc, r + dr, goalC, goalR), next});
+                    }
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static double heuristic(int c, int r, int goalC, int goalR) {
+        return Math.hypot(c - goalC, r - goalR);
+    }
+
+    /** The cell centres from start to goal, dropping those in the middle of straight runs. */
+    private static List<Point> waypoints(OccupancyGrid grid, int[] from, int s, int g, Point goal) {
+        int cols = grid.cols();
+        List<Integer> cells = new ArrayList<>();
+        for (int cell = g; cell != s; cell = from[cell]) {
+            cells.add(cell);
+        }
+        Collections.reverse(cells);
+        List<Point> points = new ArrayList<>();
+        int prev = s;
+        for (int i = 0; i < cells.size() - 1; i++) {
+            int here = cells.get(i);
+            int next = cells.get(i + 1);
+            int d1 = here - prev;
+            int d2 = next - here;
+            if (d1 != d2) {
+                points.add(grid.centre(here % cols, here / cols));
+            }
+            prev = here;
+        }
+        points.add(goal);
+        return points;
+    }
+}

@@ -1,0 +1,232 @@
+package net.smc.sim.task;
+
+import java.util.ArrayDeque;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import net.smc.sim.hardware.Pose;
+import net.smc.sim.hardware.RobotHardware;
+import net.smc.sim.hardware.Sighting;
+import net.smc.sim.map.OccupancyGrid;
+import net.smc.sim.map.PathPlanner;
+import net.smc.sim.map.Point;
+
+/**
+ * Frontier exploration: while it runs it fills the robot's occupancy grid from the infrared ring
+ * and the odometry, reports new obstacles and camera sightings, and, once told to
+ * {@link #explore()}, drives to the nearest reachable frontier (a free cell next to an unknown one,
+ * found by breadth-first search over open cells), then the next, until none is left. A frontier
+ * it cannot reach is not tried again.
+ */
+public final class Explorer extends RobotTask implements ExplorerI, Handover {
+    private static final double REPORT_STEP = 0.1;
+
+    private final OccupancyGrid map;
+    private final PathPlanner planner;
+    private final PathFollower follower;
+    private final Set<Integer> reportedObstacles = new HashSet<>();
+    private final Set<Integer> unreachable = new HashSet<>();
+    private final Set<String> sighted = new HashSet<>();
+    private boolean exploring;
+    private int target = -1;
+    private double reported;
+    private double backOffUntil = -1;
+
+    public Explorer(TaskContext context) {
+        this(context.hardware(), context.map());
+    }
+
+    public Explorer(RobotHardware hardware, OccupancyGrid map) {
+        super(hardware);
+        this.map = java.util.Objects.requireNonNull(map, "map");
+        this.planner = new PathPlanner(hardware.drive().wheelBase() / 2 + 0.05);
+        this.follower = new PathFollower(hardware, map.resolution(), 0.12);
+    }
+
+    public OccupancyGrid map() {
+        return map;
+    }
+
+    @Override
+    public void explore() {
+        exploring = true;
+        unreachable.clear();
+        target = -1;
+    }
+
+    @Override
+    public void halt() {
+        exploring = false;
+        target = -1;
+        follower.clear();
+        hardware.drive().stop();
+    }
+
+    @Override
+    public double exploredFraction() {
+        return map.exploredFraction();
+    }
+
+    @Override
+    public boolean isExploring() {
+        return exploring;
+    }
+
+    @Override
+    public void obstacle(double x, double y) {
+        raise("obstacle", x, y);
+    }
+
+    @Override
+    public void areaExplored(double fraction, boolean done) {
+        raise("areaExplored", fraction, done);
+    }
+
+    @Override
+    public void targetSighted(String tag, String kind, double x, double y) {
+        raise("targetSighted", tag, kind, x, y);
+    }
+
+    @Override
+    protected boolean drives() {
+        return true;
+    }
+
+    @Override
+    protected void step(double time, double dt) {
+        for (Point hit : RangeMapper.observe(hardware, map)) {
+            int cell = map.col(hit.x()) + map.row(hit.y()) * map.cols();
+            if (map.covers(hit.x(), hit.y()) && reportedObstacles.add(cell)) {
+                obstacle(hit.x(), hit.y());
+            }
+        }
+        look();
+        double fraction = map.exploredFraction();
+        if (fraction >= reported + REPORT_STEP) {
+            reported = Math.floor(fraction / REPORT_STEP) * REPORT_STEP;
+            areaExplored(fraction, false);
+        }
+        if (exploring) {
+            drive(time);
+        }
+    }
+
+    private void look() {
+        if (!hardware.has(RobotHardware.Device.CAMERA)) {
+            return;
+        }
+        Pose pose = hardware.odometry().pose();
+        for (Sighting s : hardware.camera().look()) {
+            if (sighted.add(s.tag())) {
+                double a = pose.heading() + s.bearing();
+                targetSighted(s.tag(), s.kind(), pose.x() + Math.cos(a) * s.distance(), pose.y() + Math.sin(a) * s.distance());
+            }
+        }
+    }
+
+    private void drive(double time) {
+        if (time < backOffUntil) {
+            double back = -0.3 * hardware.drive().maxSpeed();
+            hardware.drive().setWheelSpeeds(back, back);
+            return;
+        }
+        if (target >= 0 && !map.isFrontier(target % map.cols(), target / map.cols())) {
+            target = -1;
+        }
+        Pose pose = hardware.odometry().pose();
+        while (target < 0) {
+            Optional<Integer> next = nearestFrontier(pose);
+            if (next.isEmpty()) {
+                exploring = false;
+                follower.clear();
+                hardware.drive().stop();
+                areaExplored(map.exploredFraction(), true);
+                return;
+            }
+            Point p = map.centre(next.get() % map.cols(), next.get() / map.cols());
+            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, List.of(), 0);
+            if (path.isPresent()) {
+                target = next.get();
+                follower.follow(path.get(), map.resolution());
+            } else {
+                unreachable.add(next.get());
+            }
+        }
+        switch (follower.step()) {
+            case ARRIVED, IDLE -> target = -1;
+            case OBSTRUCTED -> {
+                unreachable.add(target);
+                target = -1;
+                backOffUntil = time + 0.5;
+            }
+            default -> { }
+        }
+    }
+
+    /** Breadth-first search over cells open to the robot, from its own cell. */
+    private Optional<Integer> nearestFrontier(Pose pose) {
+        int cols = map.cols();
+        boolean[] closed = planner.closedCells(map, List.of(), 0);
+        int startC = Math.max(0, Math.min(cols - 1, map.col(pose.x())));
+        int startR = Math.max(0, Math.min(map.rows() - 1, map.row(pose.y())));
+        int start = startC + startR * cols;
+        boolean[] seen = new boolean[closed.length];
+        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        queue.add(start);
+        seen[start] = true;
+        while (!queue.isEmpty()) {
+            int cell = queue.poll();
+            int c = cell % cols;
+            int r = cell / cols;
+            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell)) {
+                return Optional.of(cell);
+            }
+            int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+            for (int[] s : steps) {
+                int nc = c + s[0];
+                int nr = r + s[1];
+                if (!map.inside(nc, nr)) {
+                    continue;
+                }
+                int next = nc + nr * cols;
+                if (!seen[next] && !closed[next] && !map.isOccupied(nc, nr)) {
+                    seen[next] = true;
+                    if (map.isKnown(nc, nr)) {
+                        queue.add(next);
+                    }
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * {@code x}, {@code y}, {@code heading}: the robot's last pose by its odometry; {@code map}: the
+     * grid ({@link OccupancyGrid#toState()}); {@code exploring}.
+     */
+    @Override
+    public Map<String, Object> exportState() {
+        Pose pose = hardware.odometry().pose();
+        Map<String, Object> state = new LinkedHashMap<>();
+        state.put("x", pose.x());
+        state.put("y", pose.y());
+        state.put("heading", pose.heading());
+        state.put("exploring", exploring);
+        state.put("map", map.toState());
+        return state;
+    }
+
+    /** Merges the handed-over map into this robot's (the position is for policies to act on). */
+    @Override
+    public void importState(Map<String, ?> state) {
+        if (StateValues.has(state, "map")) {
+            map.merge(OccupancyGrid.fromState(StateValues.map("Explorer", state, "map")));
+        }
+        if (state.get("exploring") instanceof Boolean b && b) {
+            explore();
+        }
+    }
+}

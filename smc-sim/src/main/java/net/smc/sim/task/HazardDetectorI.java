@@ -1,0 +1,24 @@
+package net.smc.sim.task;
+
+import java.util.List;
+import net.smc.core.task.Attr;
+import net.smc.core.task.TaskEvent;
+import net.smc.core.task.TaskInterface;
+import net.smc.policy.runtime.Op;
+
+/** The task interface of {@link HazardDetector}: report hazards the chemical sensor finds. */
+@TaskInterface("HazardDetector")
+public interface HazardDetectorI {
+
+    /** The strength (0..1) at which a sensed hazard is reported (default 0.5). */
+    @Op("threshold:")
+    void threshold(double strength);
+
+    /** The hazards reported so far, each {@code [tag, kind, x, y]}. */
+    @Op("hazards")
+    List<List<Object>> hazards();
+
+    /** A hazard was sensed at or above the threshold; {@code (x, y)} is where the robot stood. */
+    @TaskEvent
+    void hazardDetected(@Attr("kind") String kind, @Attr("x") double x, @Attr("y") double y);
+}

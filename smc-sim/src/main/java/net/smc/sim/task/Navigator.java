@@ -1,0 +1,223 @@
+package net.smc.sim.task;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import net.smc.sim.hardware.Pose;
+import net.smc.sim.hardware.RobotHardware;
+import net.smc.sim.map.OccupancyGrid;
+import net.smc.sim.map.PathPlanner;
+import net.smc.sim.map.Point;
+import net.smc.sim.map.Zone;
+
+/**
+ * Goes to a point: plans with A* on the robot's map ({@link PathPlanner}), keeping out of avoided
+ * zones plus the margin, and follows the path. While it drives it keeps mapping from the infrared
+ * ring, re-plans every second and whenever something is in the way (after backing off a little),
+ * and gives up with {@code blocked} when no path is left or it has made no progress for
+ * {@link #PATIENCE} seconds.
+ */
+public final class Navigator extends RobotTask implements NavigatorI, Handover {
+    /** Seconds without getting 0.1 m closer before giving up. */
+    public static final double PATIENCE = 30;
+    private static final double REPLAN_PERIOD = 1.0;
+    private static final double BACK_OFF = 0.6;
+
+    private final OccupancyGrid map;
+    private final PathPlanner planner;
+    private final PathFollower follower;
+    private final List<Zone> zones = new ArrayList<>();
+    private double margin = 0.5;
+    private Point goal;
+    private boolean replan;
+    private double nextReplan;
+    private double backOffUntil = -1;
+    private double best;
+    private double bestAt;
+
+    public Navigator(TaskContext context) {
+        this(context.hardware(), context.map());
+    }
+
+    public Navigator(RobotHardware hardware, OccupancyGrid map) {
+        super(hardware);
+        this.map = java.util.Objects.requireNonNull(map, "map");
+        double body = hardware.drive().wheelBase() / 2;
+        this.planner = new PathPlanner(body + 0.1);
+        this.follower = new PathFollower(hardware, map.resolution(), 0.12);
+    }
+
+    @Override
+    public void goTo(double x, double y) {
+        StateValues.finite("goal x", x);
+        StateValues.finite("goal y", y);
+        if (!map.covers(x, y)) {
+            throw new IllegalArgumentException("goal (" + x + ", " + y + ") is off the map (" + map.describe()
+                    + "); a goal must lie on the map");
+        }
+        goal = new Point(x, y);
+        replan = true;
+        best = Double.POSITIVE_INFINITY;
+        bestAt = Double.NaN;
+        follower.clear();
+    }
+
+    @Override
+    public void avoid(double x, double y, double radius) {
+        zones.add(new Zone(x, y, radius));
+        replan = true;
+    }
+
+    @Override
+    public void clearZones() {
+        zones.clear();
+        replan = true;
+    }
+
+    @Override
+    public void margin(double metres) {
+        if (!(metres >= 0) || !Double.isFinite(metres)) {
+            throw new IllegalArgumentException("Navigator margin " + metres + " must be a finite number of metres, 0 or more");
+        }
+        margin = metres;
+        replan = true;
+    }
+
+    @Override
+    public void halt() {
+        goal = null;
+        follower.clear();
+        hardware.drive().stop();
+    }
+
+    @Override
+    public boolean isMoving() {
+        return goal != null;
+    }
+
+    public List<Zone> zones() {
+        return List.copyOf(zones);
+    }
+
+    public double margin() {
+        return margin;
+    }
+
+    public Optional<Point> goal() {
+        return Optional.ofNullable(goal);
+    }
+
+    @Override
+    public void arrived(double x, double y) {
+        raise("arrived", x, y);
+    }
+
+    @Override
+    public void blocked(double x, double y) {
+        raise("blocked", x, y);
+    }
+
+    @Override
+    protected boolean drives() {
+        return true;
+    }
+
+    @Override
+    protected void step(double time, double dt) {
+        RangeMapper.observe(hardware, map);
+        if (goal == null) {
+            return;
+        }
+        Pose pose = hardware.odometry().pose();
+        double distance = goal.distanceTo(pose.x(), pose.y());
+        if (Double.isNaN(bestAt) || distance < best - 0.1) {
+            best = distance;
+            bestAt = time;
+        } else if (time - bestAt > PATIENCE) {
+            giveUp();
+            return;
+        }
+        if (time < backOffUntil) {
+            double back = -0.3 * hardware.drive().maxSpeed();
+            hardware.drive().setWheelSpeeds(back, back);
+            return;
+        }
+        if (replan || time >= nextReplan || !follower.active()) {
+            replan = false;
+            nextReplan = time + REPLAN_PERIOD;
+            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), goal, zones, margin);
+            if (path.isEmpty()) {
+                giveUp();
+                return;
+            }
+            follower.follow(path.get(), map.resolution() / 2);
+        }
+        switch (follower.step()) {
+            case ARRIVED -> {
+                Point reached = goal;
+                goal = null;
+                arrived(reached.x(), reached.y());
+            }
+            case OBSTRUCTED -> {
+                backOffUntil = time + BACK_OFF;
+                replan = true;
+            }
+            default -> { }
+        }
+    }
+
+    private void giveUp() {
+        Point lost = goal;
+        goal = null;
+        follower.clear();
+        hardware.drive().stop();
+        blocked(lost.x(), lost.y());
+    }
+
+    /** {@code goal} ([x, y], absent when idle), {@code margin}, {@code zones} ([[x, y, radius] ...]). */
+    @Override
+    public Map<String, Object> exportState() {
+        Map<String, Object> state = new LinkedHashMap<>();
+        if (goal != null) {
+            state.put("goal", List.of(goal.x(), goal.y()));
+        }
+        state.put("margin", margin);
+        List<Object> list = new ArrayList<>();
+        for (Zone z : zones) {
+            list.add(List.of(z.x(), z.y(), z.radius()));
+        }
+        state.put("zones", list);
+        return state;
+    }
+
+    @Override
+    public void importState(Map<String, ?> state) {
+        List<Zone> imported = new ArrayList<>();
+        if (StateValues.has(state, "zones")) {
+            for (Object o : StateValues.list("Navigator", state, "zones")) {
+                imported.add(zoneOf(o));
+            }
+        }
+        if (StateValues.has(state, "margin")) {
+            margin(StateValues.number("Navigator", state, "margin"));
+        }
+        zones.addAll(imported);
+        if (StateValues.has(state, "goal")) {
+            List<?> g = StateValues.list("Navigator", state, "goal");
+            if (g.size() != 2 || !(g.get(0) instanceof Number x) || !(g.get(1) instanceof Number y)) {
+                throw new IllegalArgumentException("Navigator state: 'goal' must be [x, y], got " + g);
+            }
+            goTo(x.doubleValue(), y.doubleValue());
+        }
+    }
+
+    private static Zone zoneOf(Object o) {
+        if (o instanceof List<?> l && l.size() == 3 && l.get(0) instanceof Number x && l.get(1) instanceof Number y
+                && l.get(2) instanceof Number r) {
+            return new Zone(x.doubleValue(), y.doubleValue(), r.doubleValue());
+        }
+        throw new IllegalArgumentException("Navigator state: each of 'zones' must be [x, y, radius], got " + o);
+    }
+}

@@ -1,0 +1,113 @@
+package net.smc.sim.task;
+
+import java.util.ArrayList;
+import java.util.List;
+import net.smc.sim.hardware.Drive;
+import net.smc.sim.hardware.Pose;
+import net.smc.sim.hardware.ProximitySensors;
+import net.smc.sim.hardware.RobotHardware;
+import net.smc.sim.map.Point;
+
+/**
+ * Drives a robot along waypoints with a simple unicycle controller: turn towards the next
+ * waypoint (in place when it lies far off the heading), drive forward as the heading error allows,
+ * and stop short of anything the forward infrared sensors see closer than the stop distance.
+ */
+final class PathFollower {
+    /** The outcome of one control step. */
+    enum Status { IDLE, MOVING, ARRIVED, OBSTRUCTED }
+
+    private static final double TURN_GAIN = 2.5;
+    private static final double IN_PLACE = Math.toRadians(60);
+    private static final double FORWARD_CONE = Math.toRadians(50);
+
+    private final RobotHardware robot;
+    private final double waypointTolerance;
+    private final double stopDistance;
+    private final List<Point> path = new ArrayList<>();
+    private double arriveTolerance;
+
+    PathFollower(RobotHardware robot, double waypointTolerance, double stopDistance) {
+        this.robot = robot;
+        this.waypointTolerance = waypointTolerance;
+        this.stopDistance = stopDistance;
+    }
+
+    void follow(List<Point> waypoints, double arriveTolerance) {
+        path.clear();
+        path.addAll(waypoints);
+        this.arriveTolerance = arriveTolerance;
+    }
+
+    void clear() {
+        path.clear();
+    }
+
+    boolean active() {
+        return !path.isEmpty();
+    }
+
+    List<Point> remaining() {
+        return List.copyOf(path);
+    }
+
+    /** The smallest reading of the sensors facing forward, m (the range when nothing is seen). */
+    static double frontClearance(RobotHardware robot) {
+        if (!robot.has(RobotHardware.Device.PROXIMITY)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        ProximitySensors ir = robot.proximity();
+        double[] r = ir.read();
+        double min = ir.range();
+        for (int i = 0; i < r.length; i++) {
+            if (Math.abs(angleDiff(ir.angle(i), 0)) <= FORWARD_CONE) {
+                min = Math.min(min, r[i]);
+            }
+        }
+        return min;
+    }
+
+    Status step() {
+        Drive drive = robot.drive();
+        if (path.isEmpty()) {
+            return Status.IDLE;
+        }
+        Pose pose = robot.odometry().pose();
+        while (path.size() > 1 && path.get(0).distanceTo(pose.x(), pose.y()) <= waypointTolerance) {
+            path.remove(0);
+        }
+        Point target = path.get(0);
+        double distance = target.distanceTo(pose.x(), pose.y());
+        if (path.size() == 1 && distance <= arriveTolerance) {
+            path.clear();
+            drive.stop();
+            return Status.ARRIVED;
+        }
+        double error = angleDiff(Math.atan2(target.y() - pose.y(), target.x() - pose.x()), pose.heading());
+        double max = drive.maxSpeed();
+        double forward = Math.abs(error) > IN_PLACE ? 0 : max * 0.8 * Math.cos(error) * Math.min(1, distance / 0.5 + 0.2);
+        if (forward > 0 && frontClearance(robot) < stopDistance) {
+            drive.stop();
+            return Status.OBSTRUCTED;
+        }
+        double turn = TURN_GAIN * error;
+        double half = drive.wheelBase() / 2;
+        double left = forward - turn * half;
+        double right = forward + turn * half;
+        double scale = Math.max(1, Math.max(Math.abs(left), Math.abs(right)) / max);
+        drive.setWheelSpeeds(left / scale, right / scale);
+        return Status.MOVING;
+    }
+
+    /** a - b, wrapped into (-pi, pi]. */
+    static double angleDiff(double a, double b) {
+        double d = a - b;
+        while (d > Math.PI) {
+            d -= 2 * Math.PI;
+        }
+        while (d <= -Math.PI) {
+            d += 2 * Math.PI;
+        }
+        return d;
+    }
+}

@@ -1,0 +1,66 @@
+package net.smc.sim.map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+class OccupancyGridTest {
+
+    @Test
+    void observeRay_freesTheCellsCrossed_andMarksTheHit() {
+        OccupancyGrid g = new OccupancyGrid(0, 0, 4, 1, 0.5);
+        g.observeRay(0.25, 0.25, 2.25, 0.25, true);
+        assertTrue(g.isFree(0, 0) && g.isFree(3, 0));
+        assertTrue(g.isOccupied(4, 0));
+        assertFalse(g.isKnown(5, 0));
+        assertEquals(5.0 / 16, g.exploredFraction(), 1e-9);
+    }
+
+    @Test
+    void oneMiss_doesNotEraseAHit() {
+        OccupancyGrid g = new OccupancyGrid(0, 0, 4, 1, 0.5);
+        g.markOccupied(1.25, 0.25);
+        g.markFree(1.25, 0.25);
+        assertTrue(g.isOccupied(2, 0));
+    }
+
+    @Test
+    void state_roundTrips_andAMalformedCellIsNamed() {
+        OccupancyGrid g = new OccupancyGrid(0, 0, 2, 1, 0.5);
+        g.observeRay(0.25, 0.25, 1.25, 0.25, true);
+        Map<String, Object> state = g.toState();
+        assertEquals(List.of("..#?", "????"), state.get("cells"));
+        assertEquals(state, OccupancyGrid.fromState(state).toState());
+        Map<String, Object> bad = new java.util.HashMap<>(state);
+        bad.put("cells", List.of("..x?", "????"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> OccupancyGrid.fromState(bad));
+        assertTrue(e.getMessage().contains("row 0, column 2 holds 'x'"), e.getMessage());
+    }
+
+    @Test
+    void constructor_refusesANonPositiveResolution() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new OccupancyGrid(0, 0, 2, 2, 0));
+        assertTrue(e.getMessage().contains("resolution 0.0 must be a positive"), e.getMessage());
+    }
+
+    @Test
+    void planner_goesAroundAWall_andKeepsOutOfAZonePlusMargin() {
+        OccupancyGrid g = new OccupancyGrid(0, 0, 5, 5, 0.25);
+        for (double y = 0; y < 3.5; y += 0.25) {
+            g.markOccupied(2.6, y);
+        }
+        PathPlanner planner = new PathPlanner(0.2);
+        List<Point> path = planner.plan(g, new Point(1, 1), new Point(4, 1), List.of(), 0).orElseThrow();
+        assertEquals(new Point(4, 1), path.get(path.size() - 1));
+        assertTrue(path.stream().anyMatch(p -> p.y() > 3.5), "around the wall's end: " + path);
+        Zone zone = new Zone(2.5, 4.2, 0.3);
+        assertTrue(planner.plan(g, new Point(1, 1), new Point(4, 1), List.of(zone), 0.5).isEmpty(),
+                "the zone closes the only gap");
+        assertTrue(planner.plan(g, new Point(1, 1), new Point(2.5, 4.3), List.of(zone), 0).isEmpty(), "goal in the zone");
+    }
+}
