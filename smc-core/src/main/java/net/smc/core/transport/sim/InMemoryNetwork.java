@@ -114,7 +114,7 @@ public final class InMemoryNetwork {
     public void inject(Address from, Address to, byte[] data, long delayMillis) {
         Objects.requireNonNull(from, "from");
         Objects.requireNonNull(to, "to");
-        scheduleArrival(from, to, data.clone(), Math.max(0, delayMillis));
+        scheduler.schedule(Math.max(0, delayMillis), () -> arrive(from, to, data.clone()));
     }
 
     /** Cuts every link between a node of {@code sideA} and a node of {@code sideB}, both ways, until {@link #heal()}. */
