@@ -171,7 +171,7 @@ public final class ForgedFloodHarness {
                     socket.send(new DatagramPacket(forged, forged.length, to, broadcastPort));
                     forged[forged.length - 1 - (int) (sent % 60)] ^= 0x01;
                 }
-                Thread.onSpinWait();
+                java.util.concurrent.locks.LockSupport.parkNanos(500_000);   // batches every half millisecond: no busy core
             }
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
