@@ -29,7 +29,8 @@ import net.smc.core.transport.Address;
  * discoveries and capability requests, takes a role assignment once its policies have arrived (or
  * refuses it, saying why), moves up to a role of higher priority, and gives a role back when its
  * parent asks. Owns DISCOVERY (handing a rival commander's beacon to {@link Merge}),
- * CAPABILITY_REQUEST, ROLE_ASSIGNMENT, POLICY_REPLY and INVOCATION.
+ * CAPABILITY_REQUEST, ROLE_ASSIGNMENT and POLICY_REPLY, and takes a parent's {@code release}
+ * from {@link Collaboration}, which owns INVOCATION.
  */
 final class Assignee {
     private final TeamContext ctx;
@@ -203,6 +204,7 @@ final class Assignee {
         ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), true, ""));
         if (!a.handover().isEmpty()) {
             st.handedOver = a.handover();
+            ctx.host().importTaskStates(a.role(), a.handover());
             ctx.host().raise("handover", "handover", a.role(), a.handover());
         }
     }

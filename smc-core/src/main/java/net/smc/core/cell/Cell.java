@@ -1,6 +1,8 @@
 package net.smc.core.cell;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.Set;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -16,7 +18,17 @@ import net.smc.core.discovery.Discovery;
 import net.smc.core.message.Identity;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
+import net.smc.core.mission.RoleInterface;
+import net.smc.core.role.Caller;
+import net.smc.core.role.ExternalGateway;
+import net.smc.core.role.ExternalInterface;
+import net.smc.core.role.LocalInterface;
 import net.smc.core.role.PolicySource;
+import net.smc.core.role.RequiredOperation;
+import net.smc.core.role.TaskOperation;
+import net.smc.core.task.StateHandover;
+import net.smc.core.task.Task;
+import net.smc.policy.AuthMode;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
 import net.smc.core.role.TaskProvider;
@@ -54,6 +66,9 @@ import net.smc.policy.RunResult;
  * it believes what envelopes claim.
  */
 public final class Cell {
+    /** Where the team object is: {@code root/team}. */
+    public static final String TEAM = "team";
+    private static final String TASK_STATE = "#task";
     private final String vehicle;
     private final Mission mission;
     private final Slots slots;
@@ -65,6 +80,7 @@ public final class Cell {
     private final List<Diagnostic> diagnostics = new ArrayList<>();
     private final boolean commanding;
     private final TaskProvider tasks;
+    private final ExternalGateway gateway;
     private boolean started;
 
     private Cell(Builder b) {
@@ -84,6 +100,7 @@ public final class Cell {
                 .random(random.split())
                 .repository(b.repository)
                 .output(output)
+                .auth(b.auth)
                 .errors(d -> {
                     diagnostics.add(d);
                     b.trace.accept(new CellEvent(b.clock.nowMillis(), vehicle, CellEvent.Kind.REJECTED,
@@ -93,6 +110,10 @@ public final class Cell {
         RunResult boot = engine.load("policy:/boot/events");
         if (!boot.diagnostics().isEmpty()) {
             throw new IllegalStateException("cell '" + vehicle + "' cannot boot: policy:/boot/events: " + boot.diagnostics());
+        }
+        engine.root().put(TEAM, net.smc.policy.Cell.manage(new TeamObject(this)));
+        if (b.auth != AuthMode.OFF) {
+            engine.endBoot();
         }
         MessageRouter router = new MessageRouter();
         this.comm = CommunicationManager.builder(vehicle, b.transport, b.clock, b.scheduler)
@@ -121,11 +142,32 @@ public final class Cell {
             public Optional<Credential> credentialOf(String peer) {
                 return auth == null ? Optional.empty() : auth.credentialOf(peer);
             }
+
+            @Override
+            public void deliver(Caller caller, String role, String event, List<Object> values) {
+                gateway.raise(caller, role, event, values.toArray());
+            }
+
+            @Override
+            public Object invoke(Caller caller, String role, String operation, List<Object> args) {
+                return gateway.invoke(caller, role, operation, args.toArray());
+            }
+
+            @Override
+            public List<Object> taskStates() {
+                return Cell.this.taskStates();
+            }
+
+            @Override
+            public void importTaskStates(String role, List<Object> handedOver) {
+                Cell.this.importTaskStates(role, handedOver);
+            }
         };
         this.protocol = new TeamProtocol(TeamContext.builder().self(vehicle).slots(slots).timing(timing).comm(comm)
                 .clock(b.clock).scheduler(b.scheduler).description(b.description).store(store)
                 .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
+        this.gateway = new ExternalGateway(roles);
         new Discovery((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);
         protocol.register(router);
@@ -172,6 +214,83 @@ public final class Cell {
      */
     public void reportState(List<Object> state) {
         protocol.reportState(state);
+    }
+
+    /**
+     * Publishes an event of {@code role} to the roles of other vehicles that subscribe to it (the
+     * mission's {@code <interface>}); a task's event that a held role publishes is published by
+     * itself. Values as messages carry them (strings, numbers, booleans, nil, lists).
+     *
+     * @return how many tree neighbours it was sent to
+     */
+    public int publish(String role, String event, List<Object> values) {
+        return protocol.publish(role, event, WireValues.list(values));
+    }
+
+    /**
+     * Invokes {@code operation} of {@code role} on the vehicle holding it, acting as {@code callerRole};
+     * the answer is raised here as {@code root/event/remoteResult} with the returned call number.
+     */
+    public long invoke(String callerRole, String role, String operation, List<Object> args) {
+        return protocol.invoke(callerRole, role, operation, WireValues.list(args));
+    }
+
+    /** The first role this cell holds whose mission interface publishes {@code event}. */
+    Optional<String> publishingRole(String event) {
+        for (Seat s : protocol.seats()) {
+            if (slots.role(s.role()).interfaces().publishes().contains(event) && roles.isLoaded(s.role())) {
+                return Optional.of(s.role());
+            }
+        }
+        return Optional.empty();
+    }
+
+    private void taskRaised(Task task, String event, List<Object> values) {
+        publishingRole(event).ifPresent(role -> publish(role, event, values));
+    }
+
+    /** Per running task that hands state over: {@code ["#task", name, key, value, ...]}. */
+    private List<Object> taskStates() {
+        List<Object> out = new ArrayList<>();
+        if (tasks == TaskProvider.NONE) {
+            return out;
+        }
+        for (String name : new TreeSet<>(tasks.names())) {
+            Optional<Task> t = tasks.task(name);
+            if (t.isPresent() && t.get().isRunning() && t.get() instanceof StateHandover h) {
+                List<Object> entry = new ArrayList<>();
+                entry.add(TASK_STATE);
+                entry.add(name);
+                h.exportState().forEach((k, v) -> {
+                    entry.add(k);
+                    entry.add(WireValues.of(v));
+                });
+                out.add(entry);
+            }
+        }
+        return out;
+    }
+
+    private void importTaskStates(String role, List<Object> handedOver) {
+        Set<String> ofRole = slots.role(role).requirement().tasks();
+        for (Object o : handedOver) {
+            if (o instanceof List<?> l && l.size() >= 2 && TASK_STATE.equals(l.get(0)) && l.get(1) instanceof String name
+                    && ofRole.contains(name)) {
+                Optional<Task> t = tasks.task(name);
+                if (t.isPresent() && t.get() instanceof StateHandover h) {
+                    Map<String, Object> state = new LinkedHashMap<>();
+                    for (int i = 2; i + 1 < l.size(); i += 2) {
+                        state.put(String.valueOf(l.get(i)), WireValues.toJava(l.get(i + 1)));
+                    }
+                    try {
+                        h.importState(state);
+                    } catch (RuntimeException bad) {
+                        diagnostics.add(new Diagnostic(new net.smc.policy.lang.SourcePos("handover", 1, 1), "task " + name + " of role '" + role
+                                + "' refused the handed-over state: " + bad.getMessage()));
+                    }
+                }
+            }
+        }
     }
 
     /** The state handed over with the last role this vehicle took (empty if none). */
@@ -278,12 +397,24 @@ public final class Cell {
             b.authorisation(PolicySource.text(uri, text(from, uri, name)));
         }
         slots.managedRoles(name).forEach(b::manages);
-        if (tasks != TaskProvider.NONE) {
+        boolean withTasks = tasks != TaskProvider.NONE;
+        if (withTasks) {
             for (String task : new TreeSet<>(r.requirement().tasks())) {
-                b.task(task, () -> tasks.task(task).orElseThrow(() -> new IllegalStateException("vehicle '" + vehicle
-                        + "' has no task '" + task + "' (its tasks: " + new TreeSet<>(tasks.names()) + ")")));
+                b.task(task, () -> {
+                    Task t = tasks.task(task).orElseThrow(() -> new IllegalStateException("vehicle '" + vehicle
+                            + "' has no task '" + task + "' (its tasks: " + new TreeSet<>(tasks.names()) + ")"));
+                    t.listen(this::taskRaised);
+                    return t;
+                });
             }
         }
+        // The mission's <interface>: operations only where the role runs its tasks here.
+        RoleInterface in = r.interfaces();
+        List<TaskOperation> offered = withTasks
+                ? in.offers().stream().map(o -> new TaskOperation(o.task(), o.selector())).toList() : List.of();
+        b.local(new LocalInterface(offered, in.publishes()));
+        b.external(new ExternalInterface(offered, in.publishes(),
+                in.uses().stream().map(u -> new RequiredOperation(u.role(), u.selector())).toList(), in.subscribes()));
         return b.build();
     }
 
@@ -329,6 +460,7 @@ public final class Cell {
         private Consumer<String> output = line -> { };
         private SenderSettings senderSettings;
         private TaskProvider tasks = TaskProvider.NONE;
+        private AuthMode auth = AuthMode.OFF;
 
         private Builder(String vehicle, Mission mission, CapabilityDescription description) {
             this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
@@ -410,6 +542,16 @@ public final class Cell {
          */
         public Builder tasks(TaskProvider tasks) {
             this.tasks = Objects.requireNonNull(tasks, "tasks");
+            return this;
+        }
+
+        /**
+         * Whether the engine checks authorisation policies, and its default decision (default
+         * {@link AuthMode#OFF}: nothing checked). With {@link AuthMode#DENY}, as deployed, a remote
+         * role's event or invocation runs only when the receiving role's authorisations allow it.
+         */
+        public Builder auth(AuthMode mode) {
+            this.auth = Objects.requireNonNull(mode, "auth");
             return this;
         }
 

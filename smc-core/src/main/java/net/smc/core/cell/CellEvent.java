@@ -45,7 +45,13 @@ public record CellEvent(long timeMillis, String vehicle, Kind kind, String detai
         /** The commander's view of the mission changed state. */
         MISSION_STATE,
         /** Input that was refused (named in the detail). */
-        REJECTED
+        REJECTED,
+        /** A role's event was sent towards the roles of other vehicles that subscribe to it. */
+        PUBLISHED,
+        /** A remote event or invocation passed the receiving role's authorisations and ran here. */
+        DELIVERED,
+        /** An operation of another vehicle's role was called, or its answer arrived. */
+        INVOKED
     }
 
     @Override

@@ -9,7 +9,7 @@ import net.smc.core.cell.TeamState.Parent;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Heartbeat;
 import net.smc.core.message.Leave;
-import net.smc.core.message.RoleEvent;
+import net.smc.core.message.SubtreeReport;
 import net.smc.core.message.Status;
 
 /**
@@ -80,7 +80,7 @@ final class Membership {
         if (!report.equals(lastReport) || --reportCountdown <= 0) {
             reportCountdown = REPORT_TICKS;
             lastReport = report;
-            ctx.send(st.parent.address(), new RoleEvent(st.seats.get(0).role(), "report", report));
+            ctx.send(st.parent.address(), new SubtreeReport(st.seats.get(0).role(), report));
         }
     }
 

@@ -15,12 +15,12 @@ import net.smc.core.cell.TeamState.Owned;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Identity;
 import net.smc.core.message.Invocation;
-import net.smc.core.message.RoleEvent;
+import net.smc.core.message.SubtreeReport;
 
 /**
  * Subtree reports and views: a child's report (its counts, seats and state) read into this cell's
  * table, with anti-entropy against the seats it claims; the report this cell sends its parent; and
- * the views the cell and its tests read. Owns ROLE_EVENT.
+ * the views the cell and its tests read. Owns SUBTREE_REPORT.
  */
 final class Reports {
     private final TeamContext ctx;
@@ -37,9 +37,9 @@ final class Reports {
         this.recruiter = recruiter;
     }
 
-    void onRoleEvent(Envelope env, RoleEvent e) {
+    void onReport(Envelope env, SubtreeReport e) {
         Child child = st.children.get(env.sender());
-        if (child == null || !e.event().equals("report")) {
+        if (child == null) {
             return;
         }
         Map<String, Integer> counts = new LinkedHashMap<>();
@@ -130,9 +130,11 @@ final class Reports {
         v.add(BigDecimal.valueOf(counts.hostedCount()));
         v.add("#seats");
         v.add(st.seats.stream().map(Seat::toString).toList());
-        if (!st.reportedState.isEmpty() && v.size() < 60) {
+        List<Object> state = new ArrayList<>(st.reportedState);
+        state.addAll(ctx.host().taskStates());
+        if (!state.isEmpty() && v.size() < 60) {
             v.add("#state");
-            v.add(st.reportedState);
+            v.add(state);
         }
         return v;
     }

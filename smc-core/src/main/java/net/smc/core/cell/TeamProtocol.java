@@ -20,7 +20,11 @@ import net.smc.core.message.MessageType;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
+import net.smc.core.message.InvocationResult;
 import net.smc.core.message.RoleEvent;
+import net.smc.core.message.SubtreeReport;
+import net.smc.core.role.Caller;
+import net.smc.core.role.ExternalCallException;
 import net.smc.core.message.Roster;
 import net.smc.core.message.Status;
 import net.smc.core.mission.Mission;
@@ -64,6 +68,35 @@ final class TeamProtocol {
 
         /** The credential a peer authenticated with; empty when it presented none or the cell does not authenticate. */
         Optional<Credential> credentialOf(String vehicle);
+
+        /**
+         * Raises in {@code role} an event another vehicle's role published, with that role as the
+         * subject (the role's external interface and authorisations decide).
+         *
+         * @throws ExternalCallException when it is not required there or is denied
+         */
+        default void deliver(Caller caller, String role, String event, List<Object> values) {
+            throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell takes no remote events");
+        }
+
+        /**
+         * Invokes an operation of {@code role} for another vehicle's role, which is the subject.
+         *
+         * @return the answer, as a PonderTalk value
+         * @throws ExternalCallException when it is not offered, denied, or fails
+         */
+        default Object invoke(Caller caller, String role, String operation, List<Object> args) {
+            throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell takes no remote invocations");
+        }
+
+        /** The state of the running tasks worth handing over, as wire values; empty when none. */
+        default List<Object> taskStates() {
+            return List.of();
+        }
+
+        /** Gives this vehicle's tasks the task state handed over with {@code role}. */
+        default void importTaskStates(String role, List<Object> handedOver) {
+        }
     }
 
     private final TeamContext ctx;
@@ -78,6 +111,7 @@ final class TeamProtocol {
     private final Assignee assignee;
     private final Membership membership;
     private final Supervisor supervisor;
+    private final Collaboration collaboration;
     private Cancellable tickTimer;
     private boolean stopped;
 
@@ -97,6 +131,7 @@ final class TeamProtocol {
         this.assignee = new Assignee(ctx, st, seating, merge);
         this.membership = new Membership(ctx, st, seating, counts, backup, reports);
         this.supervisor = new Supervisor(ctx, st, seating, counts, backup, recruiter, merge);
+        this.collaboration = new Collaboration(ctx, st, assignee);
     }
 
     /**
@@ -114,10 +149,12 @@ final class TeamProtocol {
         route(router, MessageType.POLICY_REPLY, PolicyReply.class, assignee::onPolicyReply);
         route(router, MessageType.HEARTBEAT, Heartbeat.class, supervisor::onHeartbeat);
         route(router, MessageType.STATUS, Status.class, membership::onStatus);
-        route(router, MessageType.ROLE_EVENT, RoleEvent.class, reports::onRoleEvent);
+        route(router, MessageType.SUBTREE_REPORT, SubtreeReport.class, reports::onReport);
+        route(router, MessageType.ROLE_EVENT, RoleEvent.class, collaboration::onRoleEvent);
         route(router, MessageType.LEAVE, Leave.class, membership::onLeave);
         route(router, MessageType.ROSTER, Roster.class, backup::onRoster);
-        route(router, MessageType.INVOCATION, Invocation.class, assignee::onInvocation);
+        route(router, MessageType.INVOCATION, Invocation.class, collaboration::onInvocation);
+        route(router, MessageType.INVOCATION_RESULT, InvocationResult.class, collaboration::onInvocationResult);
     }
 
     /** The router selects by type, so the body is of {@code body}'s class: the cast names, it does not choose. */
@@ -209,6 +246,16 @@ final class TeamProtocol {
     }
 
     // ---------------------------------------------------------------- views
+
+    /** Publishes an event of {@code role} to the roles of other vehicles that subscribe to it. */
+    int publish(String role, String event, List<Object> values) {
+        return collaboration.publish(role, event, values);
+    }
+
+    /** Invokes an operation of {@code role} on the vehicle that holds it; the answer is raised as {@code remoteResult}. */
+    long invoke(String callerRole, String role, String operation, List<Object> args) {
+        return collaboration.invoke(callerRole, role, operation, args);
+    }
 
     List<Object> handedOver() {
         return reports.handedOver();

@@ -63,16 +63,32 @@ final class ExchangeBodies {
                 w.string8(m.role());
                 w.string8(m.event());
                 ValueCodec.writeList(m.values(), w);
+                w.string8(m.origin());
             },
-            r -> new RoleEvent(r.name("role"), r.name("event"), ValueCodec.readList(r, "values")));
+            r -> new RoleEvent(r.name("role"), r.name("event"), ValueCodec.readList(r, "values"),
+                    r.string8("origin", WireFormat.MAX_SENDER)));
+
+    static final BodyCodec<SubtreeReport> SUBTREE_REPORT = new BodyCodec<>(MessageType.SUBTREE_REPORT,
+            SubtreeReport.class,
+            (m, w) -> {
+                w.string8(m.role());
+                ValueCodec.writeList(m.values(), w);
+            },
+            r -> new SubtreeReport(r.name("role"), ValueCodec.readList(r, "values")));
 
     static final BodyCodec<Invocation> INVOCATION = new BodyCodec<>(MessageType.INVOCATION, Invocation.class,
             (m, w) -> {
                 w.string8(m.role());
                 w.string8(m.operation());
                 ValueCodec.writeList(m.args(), w);
+                w.string8(m.caller());
+                w.i64(m.call());
+                w.string8(m.origin());
+                w.string8(m.reply());
             },
-            r -> new Invocation(r.name("role"), r.name("operation"), ValueCodec.readList(r, "args")));
+            r -> new Invocation(r.name("role"), r.name("operation"), ValueCodec.readList(r, "args"),
+                    r.string8("caller", WireFormat.MAX_NAME), r.i64("call"), r.string8("origin", WireFormat.MAX_SENDER),
+                    r.string8("reply", WireFormat.MAX_TEXT)));
 
     static final BodyCodec<InvocationResult> INVOCATION_RESULT = new BodyCodec<>(MessageType.INVOCATION_RESULT,
             InvocationResult.class,
@@ -93,5 +109,5 @@ final class ExchangeBodies {
             });
 
     static final List<BodyCodec<?>> ALL = List.of(POLICY_REQUEST, POLICY_REPLY, HEARTBEAT, ACK,
-            ROLE_EVENT, INVOCATION, INVOCATION_RESULT, ACKS);
+            ROLE_EVENT, INVOCATION, INVOCATION_RESULT, ACKS, SUBTREE_REPORT);
 }

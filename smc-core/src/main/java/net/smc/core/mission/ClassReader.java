@@ -135,12 +135,13 @@ final class ClassReader {
             problem = "duplicate";
         }
         reporter.container(el);
-        for (String part : List.of("cardinality", "requires", "roleManagement")) {
+        for (String part : List.of("cardinality", "requires", "roleManagement", "interface")) {
             reporter.once(el.children(part), el);
         }
         XmlElement cardinality = null;
         CapabilityRequirement requirement = CapabilityRequirement.none();
         List<Ref> manages = new ArrayList<>();
+        RoleInterface interfaces = RoleInterface.NONE;
         for (XmlElement child : el.children()) {
             boolean first = el.children(child.name()).get(0) == child;
             switch (child.name()) {
@@ -160,11 +161,16 @@ final class ClassReader {
                         readManagement(child, manages);
                     }
                 }
-                default -> reporter.unexpected(child, el, "<cardinality>, <requires> or <roleManagement>");
+                case "interface" -> {
+                    if (first) {
+                        interfaces = readInterface(child);
+                    }
+                }
+                default -> reporter.unexpected(child, el, "<cardinality>, <requires>, <roleManagement> or <interface>");
             }
         }
         if (problem == null) {
-            roles.add(new RoleDecl(role, el, cardinality, manages, requirement));
+            roles.add(new RoleDecl(role, el, cardinality, manages, requirement, interfaces));
         }
     }
 
@@ -204,5 +210,74 @@ final class ClassReader {
                 manages.add(new Ref(managed, child));
             }
         }
+    }
+
+    /** {@code <interface>}: the role's external interface (section II-B.2.A). */
+    private RoleInterface readInterface(XmlElement el) {
+        reporter.container(el);
+        List<String> publishes = new ArrayList<>();
+        List<String> subscribes = new ArrayList<>();
+        List<RoleInterface.Offer> offers = new ArrayList<>();
+        List<RoleInterface.Use> uses = new ArrayList<>();
+        for (XmlElement child : el.children()) {
+            switch (child.name()) {
+                case "publishes" -> event(child, publishes);
+                case "subscribes" -> event(child, subscribes);
+                case "offers" -> {
+                    String task = attributed(child, "task", "a task name (Aggregator ...)");
+                    String selector = selector(child);
+                    if (!task.isEmpty() && !selector.isEmpty()) {
+                        offers.add(new RoleInterface.Offer(task, selector));
+                    }
+                }
+                case "uses" -> {
+                    String role = attributed(child, "role", "a role name");
+                    String selector = selector(child);
+                    if (!role.isEmpty() && !selector.isEmpty()) {
+                        uses.add(new RoleInterface.Use(role, selector));
+                    }
+                }
+                default -> reporter.unexpected(child, el, "<publishes>, <subscribes>, <offers> or <uses>");
+            }
+        }
+        return new RoleInterface(publishes, subscribes, offers, uses);
+    }
+
+    private void event(XmlElement el, List<String> into) {
+        String event = reporter.leaf(el, "an event name (hazardDetected ...)");
+        if (event.isEmpty()) {
+            return;
+        }
+        if (!event.matches("[A-Za-z][A-Za-z0-9_]*")) {
+            reporter.textError(el, "event name '" + event + "'; an event name is a letter, then letters, digits or _");
+        } else if (into.contains(event)) {
+            reporter.textError(el, "event '" + event + "' is listed twice in " + el.tag());
+        } else {
+            into.add(event);
+        }
+    }
+
+    /** The value of the one attribute {@code name} an element takes, reported when missing. */
+    private String attributed(XmlElement el, String name, String what) {
+        reporter.attributes(el, Set.of(name));
+        String value = el.attribute(name).orElse("").trim();
+        if (value.isEmpty()) {
+            reporter.error(el, "missing attribute '" + name + "'; " + el.tag() + " names " + what);
+        }
+        return value;
+    }
+
+    private String selector(XmlElement el) {
+        for (XmlElement child : el.children()) {
+            reporter.error(child, "unexpected element; " + el.tag() + " holds text only");
+        }
+        String selector = el.text();
+        if (selector.isEmpty()) {
+            reporter.error(el, "empty; " + el.tag() + " must hold a PonderTalk selector (report:x:y: ...)");
+        } else if (!selector.matches("[A-Za-z][A-Za-z0-9_]*|([A-Za-z][A-Za-z0-9_]*:)+")) {
+            reporter.textError(el, "selector '" + selector + "'; a selector is a name (hazards) or keywords (report:x:y:)");
+            return "";
+        }
+        return selector;
     }
 }

@@ -35,7 +35,7 @@ record ClassSpec(XmlElement root, String name, List<ParamDecl> parameters, List<
      *                    instance sets no cardinality and the role has exactly one holder
      */
     record RoleDecl(String name, XmlElement at, XmlElement cardinality, List<Ref> manages,
-                    CapabilityRequirement requirement) {
+                    CapabilityRequirement requirement, RoleInterface interfaces) {
         boolean hasCardinality() {
             return cardinality != null;
         }

@@ -186,7 +186,7 @@ public final class MissionLoader {
             roles.add(new MissionRole(decl.name(), minimal, optimal, decl.manages().stream().map(Ref::name).toList(),
                     decl.requirement(), Optional.ofNullable(primaryOf.get(decl.name())),
                     entry.policies().stream().map(Ref::name).toList(),
-                    entry.authorisations().stream().map(Ref::name).toList()));
+                    entry.authorisations().stream().map(Ref::name).toList(), decl.interfaces()));
         }
         Colocation colocation = new Colocation(
                 spec.parallel().stream().map(p -> new Colocation.Parallel(p.role().name(),

@@ -22,9 +22,11 @@ import net.smc.core.capability.CapabilityRequirement;
  *                    files that create the obligation policies that give the role its behaviour, in order
  * @param authorisations the policy URIs of the role's authorisations ({@code policy:/roles/surveyor/auth}):
  *                    files that create its authorisation policies, in order
+ * @param interfaces  the events it publishes and subscribes to and the operations it offers and uses
  */
 public record MissionRole(String name, int minimal, int optimal, List<String> manages, CapabilityRequirement requirement,
-                          Optional<String> primary, List<String> policies, List<String> authorisations) {
+                          Optional<String> primary, List<String> policies, List<String> authorisations,
+                          RoleInterface interfaces) {
 
     public MissionRole {
         Objects.requireNonNull(name, "name");
@@ -33,10 +35,17 @@ public record MissionRole(String name, int minimal, int optimal, List<String> ma
         manages = List.copyOf(manages);
         policies = List.copyOf(policies);
         authorisations = List.copyOf(authorisations);
+        interfaces = interfaces == null ? RoleInterface.NONE : interfaces;
         if (minimal < 0 || optimal < 1 || minimal > optimal) {
             throw new IllegalArgumentException("role '" + name + "' has minimal " + minimal + " and optimal " + optimal
                     + "; they must satisfy 0 <= minimal <= optimal and optimal >= 1");
         }
+    }
+
+    /** A role without an external interface. */
+    public MissionRole(String name, int minimal, int optimal, List<String> manages, CapabilityRequirement requirement,
+                       Optional<String> primary, List<String> policies, List<String> authorisations) {
+        this(name, minimal, optimal, manages, requirement, primary, policies, authorisations, RoleInterface.NONE);
     }
 
     /** Whether this role may ride on a vehicle of its primary role. */

@@ -17,7 +17,7 @@ public final class ExternalCallException extends RuntimeException {
 
     private final Kind kind;
 
-    ExternalCallException(Kind kind, String message) {
+    public ExternalCallException(Kind kind, String message) {
         super(message);
         this.kind = kind;
     }

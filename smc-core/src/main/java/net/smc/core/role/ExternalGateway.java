@@ -79,7 +79,7 @@ public final class ExternalGateway {
             throw new ExternalCallException(Kind.FAILED, "event '" + event + "' required by role '" + role
                     + "' has no template at root/event/" + event);
         }
-        send(caller, object, template, "create:", new Object[] {List.of(values)}, "event '" + event + "' of role '" + role + "'");
+        send(caller, object, template, "create:", new Object[] {java.util.Arrays.asList(values)}, "event '" + event + "' of role '" + role + "'");
     }
 
     private RoleObject loaded(String role) {

@@ -42,6 +42,7 @@ public abstract class Task {
     private ManagedObject handle;
     private TaskEvents events;
     private long droppedEvents;
+    private TaskListener listener;
 
     /**
      * The task's name: by the paper's naming scheme, the simple name of its class. The capability
@@ -133,6 +134,11 @@ public abstract class Task {
         return events != null;
     }
 
+    /** Sets who is told of each event this task raises while bound (one listener; {@code null}: nobody). */
+    public final void listen(TaskListener listener) {
+        this.listener = listener;
+    }
+
     /** How many events the task raised while bound to no cell (they went nowhere). */
     public final long droppedEvents() {
         return droppedEvents;
@@ -152,6 +158,10 @@ public abstract class Task {
             LOG.debug("task {} raised '{}' while bound to no cell; dropped", name(), event);
             return false;
         }
-        return events.raise(event, values);
+        boolean delivered = events.raise(event, values);
+        if (listener != null) {
+            listener.raised(this, event, java.util.Arrays.asList(values.clone()));
+        }
+        return delivered;
     }
 }

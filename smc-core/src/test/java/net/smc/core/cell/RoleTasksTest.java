@@ -34,6 +34,12 @@ class RoleTasksTest {
     public interface AggregatorI {
         @Op("collect")
         void collect();
+
+        @Op("report:x:y:")
+        void report(String kind, double x, double y);
+
+        @Op("hazards")
+        java.util.List<Object> hazards();
     }
 
     @TaskInterface("HazardDetector")
@@ -73,6 +79,15 @@ class RoleTasksTest {
     public static final class Aggregator extends Counted implements AggregatorI {
         @Override
         public void collect() {
+        }
+
+        @Override
+        public void report(String kind, double x, double y) {
+        }
+
+        @Override
+        public java.util.List<Object> hazards() {
+            return java.util.List.of();
         }
     }
 

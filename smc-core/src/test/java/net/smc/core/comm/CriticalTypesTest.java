@@ -17,10 +17,11 @@ class CriticalTypesTest {
     void default_holdsTheRequestReplyExchanges_andNotDiscoveryOrHeartbeats() {
         assertEquals(EnumSet.of(MessageType.ROLE_ASSIGNMENT, MessageType.ASSIGNMENT_RESPONSE,
                 MessageType.CAPABILITY_REQUEST, MessageType.CAPABILITY_REPLY, MessageType.POLICY_REQUEST,
-                MessageType.POLICY_REPLY, MessageType.INVOCATION, MessageType.INVOCATION_RESULT),
+                MessageType.POLICY_REPLY, MessageType.INVOCATION, MessageType.INVOCATION_RESULT, MessageType.ROLE_EVENT),
                 EnumSet.copyOf(CriticalTypes.DEFAULT.types()));
         assertFalse(CriticalTypes.DEFAULT.contains(MessageType.HEARTBEAT));
         assertFalse(CriticalTypes.DEFAULT.contains(MessageType.DISCOVERY));
+        assertFalse(CriticalTypes.DEFAULT.contains(MessageType.SUBTREE_REPORT));
     }
 
     @Test

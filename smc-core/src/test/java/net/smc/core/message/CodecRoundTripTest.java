@@ -166,4 +166,22 @@ class CodecRoundTripTest {
         assertEquals(2, codec.decoder.fragmentsPending());
         assertEquals(0, codec.decoder.rejected());
     }
+
+    @Test
+    void rolesAcrossVehicles_fieldsSurviveTheWire() {
+        Envelope e = new Envelope("d1", 7, new RoleEvent("hdetector", "hazardDetected", List.of("gas"), "d2"));
+        assertEquals("d2", ((RoleEvent) codec.roundTrip(e).body()).origin());
+        Invocation i = new Invocation("aggregator", "report:x:y:", List.of("gas"), "hdetector", 42, "d2", "10.0.0.7:4001");
+        Invocation back = (Invocation) codec.roundTrip(new Envelope("s1", 8, i)).body();
+        assertEquals(i, back);
+        assertEquals(42, back.call());
+        assertEquals("hdetector", back.caller());
+        assertEquals("10.0.0.7:4001", back.reply());
+        assertEquals("d1", new Invocation("r", "release", List.of()).originOr("d1"));
+    }
+
+    @Test
+    void anInvocationWithANegativeCall_isRefused() {
+        assertThrows(IllegalArgumentException.class, () -> new Invocation("r", "o", List.of(), "c", -1, "", ""));
+    }
 }

@@ -26,7 +26,7 @@ class WireFormatTest {
         byte[] d = codec.datagram(new Envelope("u", 1, new RoleEvent("r", "e", java.util.Arrays.asList(
                 null, false, true, "hi", new java.math.BigDecimal("-1.5"), List.of()))));
         String payload = hex(d).substring(hex(d).indexOf(" 01 72"));  // after the payload length
-        assertEquals(" 01 72 01 65 06 00 01 02 03 00 02 68 69 04 00 00 00 01 01 f1 05 00", payload);
+        assertEquals(" 01 72 01 65 06 00 01 02 03 00 02 68 69 04 00 00 00 01 01 f1 05 00 00", payload);  // ..., origin ""
     }
 
     @Test

@@ -2,6 +2,8 @@ package net.smc.sim.bench;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import net.smc.core.transport.sim.SimulationScheduler;
@@ -10,6 +12,7 @@ import net.smc.sim.robot.SimRobot;
 import net.smc.sim.world.Arena;
 import net.smc.sim.world.ArenaReader;
 import net.smc.sim.world.SimWorld;
+import org.dyn4j.geometry.AABB;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Level;
@@ -24,7 +27,9 @@ import org.openjdk.jmh.annotations.State;
  * One 20 ms world step, run by the scheduler, with every robot's control loop reading all of its
  * sensors (16 infrared rays, the camera, the chemical sensor, the radio's neighbour table) and
  * wandering. Throughput in steps per second times 0.02 is simulated seconds per wall second:
- * {@code rescue} has the paper's 3 robots, {@code house} 50 robots in the house arena.
+ * {@code rescue} has the paper's 3 robots, {@code house} 50 robots in the house arena, spread
+ * through its rooms (a steady state of robots driving about; {@code layout=lobby} packs them into
+ * the lobby instead, a pile-up that lasts the whole run).
  *
  * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-f 1 -wi 2 -i 3 -w 1s -r 1s WorldStepBenchmark'</pre>
  */
@@ -34,6 +39,10 @@ import org.openjdk.jmh.annotations.State;
 public class WorldStepBenchmark {
     @Param({"rescue", "house"})
     public String arena;
+
+    /** Where the house's robots start: {@code spread} through the rooms, or packed in the {@code lobby}. */
+    @Param({"spread"})
+    public String layout;
 
     private SimulationScheduler scheduler;
     private SimWorld world;
@@ -52,7 +61,7 @@ public class WorldStepBenchmark {
             for (String id : new String[] {"r1", "r2", "r3"}) {
                 wander(world.addRobot(id, id));
             }
-        } else {
+        } else if (layout.equals("lobby")) {
             // 50 robots on a 0.6 m grid in the lobby (x 0-4), clear of its pillar at (2, 10)
             int n = 0;
             for (int row = 0; row < 22 && n < 50; row++) {
@@ -64,9 +73,33 @@ public class WorldStepBenchmark {
                     }
                 }
             }
+        } else {
+            // 50 robots spread through the house: on free points of a 1 m grid, away from the hazards
+            // that disable, evenly chosen and facing all ways
+            List<double[]> free = new ArrayList<>();
+            for (double y = 0.5; y < a.height(); y++) {
+                for (double x = 0.5; x < a.width(); x++) {
+                    if (free(world, a, x, y)) {
+                        free.add(new double[] {x, y});
+                    }
+                }
+            }
+            for (int n = 0; n < 50; n++) {
+                double[] at = free.get(n * free.size() / 50);
+                wander(world.addRobot("r" + n, new Arena.Start("g", at[0], at[1], 2.4 * n), KoalaSpec.koala()));
+            }
         }
         world.start();
         scheduler.runFor(1_000);
+    }
+
+    private static boolean free(SimWorld world, Arena a, double x, double y) {
+        for (Arena.Hazard h : a.hazards()) {
+            if (h.disables() && Math.hypot(x - h.x(), y - h.y()) < h.effect() + 0.5) {
+                return false;
+            }
+        }
+        return world.physics().detect(new AABB(x - 0.3, y - 0.3, x + 0.3, y + 0.3), null).isEmpty();
     }
 
     private void wander(SimRobot robot) {

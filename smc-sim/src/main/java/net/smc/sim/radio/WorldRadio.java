@@ -1,7 +1,10 @@
 package net.smc.sim.radio;
 
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.TreeMap;
@@ -34,9 +37,19 @@ public final class WorldRadio implements RadioModel {
     private final RandomGenerator random;
     private final Map<Address, String> nodes = new HashMap<>();
     private final Map<String, Address> addresses = new HashMap<>();
-    private final Map<Long, Double> cache = new HashMap<>();
+    // Robots and stations are numbered as first seen; a pair's quality is kept for the step in a
+    // capacity x capacity table, valid where computedIn holds the current generation.
     private final Map<String, Integer> numbers = new HashMap<>();
+    private final List<String> ids = new ArrayList<>();
+    private SimRobot[] robots = new SimRobot[0];
+    private Arena.Station[] station = new Arena.Station[0];
+    private int capacity;
+    private double[] cache = new double[0];
+    private long[] computedIn = new long[0];
     private long cachedStep = -1;
+    private long generation;
+    private int[] sorted;
+    private int sortedRobots;
 
     /** Made by the world; {@code seed} seeds the loss draws. */
     public WorldRadio(SimWorld world, RadioSettings settings, long seed) {
@@ -82,7 +95,7 @@ public final class WorldRadio implements RadioModel {
         String a = nodes.get(from);
         String b = nodes.get(to);
         if (a == null || b == null) {
-            return settings.unboundReaches() && (a == null || on(a)) && (b == null || on(b));
+            return settings.unboundReaches() && (a == null || on(number(a))) && (b == null || on(number(b)));
         }
         double quality = quality(a, b);
         return quality > 0 && random.nextDouble() < quality;
@@ -93,19 +106,7 @@ public final class WorldRadio implements RadioModel {
         if (a.equals(b)) {
             return 0;
         }
-        if (cachedStep != world.steps()) {
-            cache.clear();
-            cachedStep = world.steps();
-        }
-        int na = number(a);
-        int nb = number(b);
-        long key = na < nb ? ((long) na << 32) | nb : ((long) nb << 32) | na;
-        Double known = cache.get(key);
-        if (known == null) {
-            known = compute(a, b);
-            cache.put(key, known);
-        }
-        return known;
+        return quality(number(a), number(b));
     }
 
     /** The {@link Radio} view of robot {@code id}: every other robot and station it has a link to. */
@@ -114,63 +115,156 @@ public final class WorldRadio implements RadioModel {
     }
 
     private Map<String, Double> neighbours(String id) {
-        Map<String, Double> out = new TreeMap<>();
-        if (!on(id)) {
-            return out;
+        int self = number(id);
+        if (!on(self)) {
+            return Collections.emptyMap();
         }
-        for (SimRobot robot : world.robots()) {
-            link(out, id, robot.id());
+        int[] order = sortedNodes();
+        String[] keys = new String[order.length];
+        double[] values = new double[order.length];
+        int n = 0;
+        for (int other : order) {
+            if (other != self) {
+                double q = quality(self, other);
+                if (q > 0) {
+                    keys[n] = ids.get(other);
+                    values[n++] = q;
+                }
+            }
         }
-        for (Arena.Station station : world.arena().stations()) {
-            link(out, id, station.id());
-        }
-        return Collections.unmodifiableMap(out);
+        return new Neighbours(keys, values, n);
     }
 
-    private void link(Map<String, Double> out, String self, String other) {
-        double q = quality(self, other);
-        if (q > 0) {
-            out.put(other, q);
+    /** The quality between two numbered nodes, computed once per step and pair. */
+    private double quality(int na, int nb) {
+        if (cachedStep != world.steps()) {
+            cachedStep = world.steps();
+            generation++;
         }
+        int lo = Math.min(na, nb);
+        int hi = Math.max(na, nb);
+        int key = lo * capacity + hi;
+        if (computedIn[key] != generation) {
+            cache[key] = compute(lo, hi);
+            computedIn[key] = generation;
+        }
+        return cache[key];
     }
 
-    private double compute(String a, String b) {
-        double[] pa = position(a);
-        double[] pb = position(b);
-        if (pa == null || pb == null || !on(a) || !on(b)) {
+    private double compute(int a, int b) {
+        if (!located(a) || !located(b) || !on(a) || !on(b)) {
             return 0;
         }
-        double d = Math.hypot(pb[0] - pa[0], pb[1] - pa[1]);
-        if (d > settings.range()) {
+        double ax = x(a);
+        double ay = y(a);
+        double bx = x(b);
+        double by = y(b);
+        double range = settings.range();
+        double d2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
+        if (d2 > range * range * (1 + 1e-9)) {
+            return 0;   // clearly out of range: spare the exact test
+        }
+        double d = Math.hypot(bx - ax, by - ay);
+        if (d > range) {
             return 0;
         }
-        double r = d / settings.range();
+        double r = d / range;
         double q = 1 - r * r * r * r;
         if (settings.wallFactor() < 1) {
-            q *= Math.pow(settings.wallFactor(), world.wallsBetween(pa[0], pa[1], pb[0], pb[1]));
+            q *= Math.pow(settings.wallFactor(), world.wallsBetween(ax, ay, bx, by, wallsAllowed(q)));
         }
         return q < settings.minQuality() ? 0 : q;
     }
 
-    private boolean on(String id) {
-        SimRobot robot = world.robot(id);
+    /** The most walls through which a link of open-air quality {@code q} stays at or above the minimum. */
+    private int wallsAllowed(double q) {
+        double f = settings.wallFactor();
+        if (f == 0) {
+            return 0;
+        }
+        // a margin of one wall against rounding: counting one further never changes the result
+        double walls = Math.log(settings.minQuality() / q) / Math.log(f);
+        return walls >= Integer.MAX_VALUE - 2 || Double.isNaN(walls) ? Integer.MAX_VALUE - 2 : Math.max(0, (int) walls + 1);
+    }
+
+    /** Every robot and station by id, robots added since the last call included. */
+    private int[] sortedNodes() {
+        List<SimRobot> all = world.robots();
+        if (sorted == null || sortedRobots != all.size()) {
+            TreeMap<String, Integer> byId = new TreeMap<>();
+            for (SimRobot robot : all) {
+                byId.put(robot.id(), number(robot.id()));
+            }
+            for (Arena.Station station : world.arena().stations()) {
+                byId.putIfAbsent(station.id(), number(station.id()));
+            }
+            sorted = byId.values().stream().mapToInt(Integer::intValue).toArray();
+            sortedRobots = all.size();
+        }
+        return sorted;
+    }
+
+    private boolean on(int node) {
+        SimRobot robot = robot(node);
         return robot == null || robot.radioOn();
     }
 
-    private double[] position(String id) {
-        SimRobot robot = world.robot(id);
-        if (robot != null) {
-            return new double[] {robot.x(), robot.y()};
+    /** The robot numbered {@code node}, or null for a station or an unknown id. */
+    private SimRobot robot(int node) {
+        SimRobot robot = robots[node];
+        if (robot == null && station[node] == null) {
+            robot = world.robot(ids.get(node));   // an id first seen before its robot was added
+            robots[node] = robot;
         }
-        for (Arena.Station station : world.arena().stations()) {
-            if (station.id().equals(id)) {
-                return new double[] {station.x(), station.y()};
-            }
-        }
-        return null;
+        return robot;
+    }
+
+    private boolean located(int node) {
+        return robot(node) != null || station[node] != null;
+    }
+
+    private double x(int node) {
+        SimRobot robot = robots[node];
+        return robot != null ? robot.x() : station[node].x();
+    }
+
+    private double y(int node) {
+        SimRobot robot = robots[node];
+        return robot != null ? robot.y() : station[node].y();
     }
 
     private int number(String id) {
-        return numbers.computeIfAbsent(id, k -> numbers.size());
+        Integer known = numbers.get(id);
+        if (known != null) {
+            return known;
+        }
+        int n = ids.size();
+        if (n == capacity) {
+            grow();
+        }
+        numbers.put(id, n);
+        ids.add(id);
+        robots[n] = world.robot(id);
+        for (Arena.Station s : world.arena().stations()) {
+            if (robots[n] == null && s.id().equals(id)) {
+                station[n] = s;
+            }
+        }
+        return n;
+    }
+
+    private void grow() {
+        int old = capacity;
+        capacity = Math.max(16, 2 * old);
+        robots = Arrays.copyOf(robots, capacity);
+        station = Arrays.copyOf(station, capacity);
+        double[] oldCache = cache;
+        long[] oldComputed = computedIn;
+        cache = new double[capacity * capacity];
+        computedIn = new long[capacity * capacity];
+        for (int i = 0; i < old; i++) {
+            System.arraycopy(oldCache, i * old, cache, i * capacity, old);
+            System.arraycopy(oldComputed, i * old, computedIn, i * capacity, old);
+        }
     }
 }

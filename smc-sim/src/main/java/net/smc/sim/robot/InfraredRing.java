@@ -13,6 +13,10 @@ final class InfraredRing implements ProximitySensors {
     private static final double INSET = 0.02;
     private final SimRobot robot;
     private final double[] edge;   // distance from the centre to the body's edge along each sensor
+    private final double[] rayX;   // scratch: each ray's start and direction, and its hit distance
+    private final double[] rayY;
+    private final double[] rayAngle;
+    private final double[] hits;
 
     InfraredRing(SimRobot robot) {
         this.robot = robot;
@@ -24,6 +28,10 @@ final class InfraredRing implements ProximitySensors {
             double s = Math.abs(Math.sin(a));
             edge[i] = Math.min(c == 0 ? Double.MAX_VALUE : spec.length() / 2 / c, s == 0 ? Double.MAX_VALUE : spec.width() / 2 / s);
         }
+        rayX = new double[edge.length];
+        rayY = new double[edge.length];
+        rayAngle = new double[edge.length];
+        hits = new double[edge.length];
     }
 
     @Override
@@ -51,8 +59,13 @@ final class InfraredRing implements ProximitySensors {
         for (int i = 0; i < edge.length; i++) {
             double direction = p.heading() + spec.irAngle(i);
             double from = edge[i] - INSET;
-            double hit = robot.world().castRay(p.x() + from * Math.cos(direction), p.y() + from * Math.sin(direction),
-                    direction, range + INSET, robot.body());
+            rayX[i] = p.x() + from * Math.cos(direction);
+            rayY[i] = p.y() + from * Math.sin(direction);
+            rayAngle[i] = direction;
+        }
+        robot.world().castRays(rayX, rayY, rayAngle, range + INSET, robot.body(), hits);
+        for (int i = 0; i < edge.length; i++) {
+            double hit = hits[i];
             if (Double.isInfinite(hit)) {
                 out[i] = range;
             } else {

@@ -11,12 +11,15 @@ final class StaticShapes {
     private static final double FENCE = 0.2;
     private final double[] rects;   // per rectangle: cx, cy, hw, hh, cos, sin, blocksRadio (0/1)
     private final double[] circles; // per circle: cx, cy, r
+    private final double[] rectBoxes;   // per rectangle: its bounding box minX, minY, maxX, maxY
     private int rectCount;
+    private final int blockingCount;   // the first rectangles, those that block the radio
     private int circleCount;
 
     StaticShapes(Arena arena) {
         int nRects = 4 + arena.walls().size() + arena.doors().size() + arena.boxes().size();
         rects = new double[7 * nRects];
+        rectBoxes = new double[4 * nRects];
         circles = new double[3 * arena.cylinders().size()];
         double w = arena.width();
         double h = arena.height();
@@ -32,6 +35,7 @@ final class StaticShapes {
                 segment(door.x1(), door.y1(), door.x2(), door.y2(), door.thickness());
             }
         }
+        blockingCount = rectCount;
         for (Arena.Box box : arena.boxes()) {
             rect(box.x(), box.y(), box.width() / 2, box.height() / 2, box.angle(), false);
         }
@@ -49,6 +53,14 @@ final class StaticShapes {
     }
 
     private void rect(double cx, double cy, double hw, double hh, double angle, boolean blocksRadio) {
+        // the bounding box, a hair wider so that rounding never rejects a segment the exact test accepts
+        double ex = Math.abs(Math.cos(angle)) * hw + Math.abs(Math.sin(angle)) * hh + 1e-9;
+        double ey = Math.abs(Math.sin(angle)) * hw + Math.abs(Math.cos(angle)) * hh + 1e-9;
+        int b = 4 * rectCount;
+        rectBoxes[b] = cx - ex;
+        rectBoxes[b + 1] = cy - ey;
+        rectBoxes[b + 2] = cx + ex;
+        rectBoxes[b + 3] = cy + ey;
         int i = 7 * rectCount++;
         rects[i] = cx;
         rects[i + 1] = cy;
@@ -74,11 +86,14 @@ final class StaticShapes {
         return true;
     }
 
-    /** How many radio-blocking rectangles (fence, walls, closed doors) the segment from a to b touches. */
-    int wallsCrossed(double ax, double ay, double bx, double by) {
+    /**
+     * How many radio-blocking rectangles (fence, walls, closed doors) the segment from a to b
+     * touches, counting no further than {@code limit + 1}.
+     */
+    int wallsCrossed(double ax, double ay, double bx, double by, int limit) {
         int n = 0;
-        for (int r = 0; r < rectCount; r++) {
-            if (rects[7 * r + 6] != 0 && crossesRect(7 * r, ax, ay, bx, by)) {
+        for (int r = 0; r < blockingCount && n <= limit; r++) {
+            if (crossesRect(7 * r, ax, ay, bx, by)) {
                 n++;
             }
         }
@@ -86,6 +101,23 @@ final class StaticShapes {
     }
 
     private boolean crossesRect(int i, double ax, double ay, double bx, double by) {
+        int b = 4 * (i / 7);
+        if (Math.max(ax, bx) < rectBoxes[b] || Math.min(ax, bx) > rectBoxes[b + 2]
+                || Math.max(ay, by) < rectBoxes[b + 1] || Math.min(ay, by) > rectBoxes[b + 3]) {
+            return false;   // the segment's bounding box misses the rectangle's, so the segment does too
+        }
+        // The segment's line misses the rectangle when the centre is further from it than the
+        // rectangle reaches across it (lengths scaled by the segment's length; with a margin for rounding).
+        double nx = ay - by;
+        double ny = bx - ax;
+        double ox = rects[i] - ax;
+        double oy = rects[i + 1] - ay;
+        double reach = rects[i + 2] * Math.abs(nx * rects[i + 4] + ny * rects[i + 5])
+                + rects[i + 3] * Math.abs(ny * rects[i + 4] - nx * rects[i + 5]);
+        double margin = 1e-9 * (Math.abs(nx) + Math.abs(ny)) * (1 + Math.abs(ox) + Math.abs(oy) + reach);
+        if (Math.abs(nx * ox + ny * oy) > reach + margin) {
+            return false;
+        }
         double c = rects[i + 4];
         double s = rects[i + 5];
         double px = ax - rects[i];
@@ -96,20 +128,32 @@ final class StaticShapes {
         double lpy = -s * px + c * py;
         double ldx = c * dx + s * dy;
         double ldy = -s * dx + c * dy;
-        double[] range = {0, 1};
-        return slab(lpx, ldx, rects[i + 2], range) && slab(lpy, ldy, rects[i + 3], range);
-    }
-
-    /** Narrows {@code range} (of the segment's parameter) to where it is within [-half, half] on one axis. */
-    private static boolean slab(double p, double d, double half, double[] range) {
-        if (Math.abs(d) < 1e-12) {
-            return Math.abs(p) <= half;
+        // the slab test: narrow the segment's parameter range [lo, hi] to where it is within each axis's half extent
+        double lo = 0;
+        double hi = 1;
+        double hw = rects[i + 2];
+        if (Math.abs(ldx) < 1e-12) {
+            if (Math.abs(lpx) > hw) {
+                return false;
+            }
+        } else {
+            double t1 = (-hw - lpx) / ldx;
+            double t2 = (hw - lpx) / ldx;
+            lo = Math.max(lo, Math.min(t1, t2));
+            hi = Math.min(hi, Math.max(t1, t2));
+            if (lo > hi) {
+                return false;
+            }
         }
-        double t1 = (-half - p) / d;
-        double t2 = (half - p) / d;
-        range[0] = Math.max(range[0], Math.min(t1, t2));
-        range[1] = Math.min(range[1], Math.max(t1, t2));
-        return range[0] <= range[1];
+        double hh = rects[i + 3];
+        if (Math.abs(ldy) < 1e-12) {
+            return Math.abs(lpy) <= hh;
+        }
+        double t1 = (-hh - lpy) / ldy;
+        double t2 = (hh - lpy) / ldy;
+        lo = Math.max(lo, Math.min(t1, t2));
+        hi = Math.min(hi, Math.max(t1, t2));
+        return lo <= hi;
     }
 
     private boolean crossesCircle(int i, double ax, double ay, double bx, double by) {

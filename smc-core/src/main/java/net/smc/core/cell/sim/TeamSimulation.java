@@ -87,6 +87,7 @@ public final class TeamSimulation {
     private final Deque<String> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
     private final Function<String, TaskProvider> tasks;
+    private final net.smc.policy.AuthMode auth;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
     private int nextPort = 5000;
@@ -107,6 +108,7 @@ public final class TeamSimulation {
 
     private TeamSimulation(Builder b) {
         this.tasks = b.tasks;
+        this.auth = b.auth;
         this.mission = b.mission;
         this.repository = b.repository;
         this.seed = b.seed;
@@ -165,7 +167,7 @@ public final class TeamSimulation {
         Cell.Builder b = Cell.builder(n.spec.id(), mission, n.spec.description())
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
-                .trace(this::record).tasks(tasks.apply(n.spec.id()));
+                .trace(this::record).tasks(tasks.apply(n.spec.id())).auth(auth);
         if (scheme != null) {
             b.scheme(scheme);
         }
@@ -398,6 +400,7 @@ public final class TeamSimulation {
         private long mergeBoundMillis = -1;
         private Consumer<CellEvent> listener = e -> { };
         private Function<String, TaskProvider> tasks = id -> TaskProvider.NONE;
+        private net.smc.policy.AuthMode auth = net.smc.policy.AuthMode.OFF;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -449,6 +452,12 @@ public final class TeamSimulation {
          */
         public Builder tasks(Function<String, TaskProvider> tasksOfVehicle) {
             this.tasks = Objects.requireNonNull(tasksOfVehicle, "tasksOfVehicle");
+            return this;
+        }
+
+        /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
+        public Builder auth(net.smc.policy.AuthMode mode) {
+            this.auth = Objects.requireNonNull(mode, "auth");
             return this;
         }
 
