@@ -188,7 +188,7 @@ public final class TeamSimulation {
             case NONE -> raw;
             case IDEAL -> ideal.wrap(raw, identity(n.spec, mission.instanceName()).credential());
             case REAL -> new SecureTransport(raw, SecureEndpoint.builder(identity(n.spec, mission.instanceName()), trust, sim)
-                    .random(seeded(seed * 31 + n.address.port())).build());
+                    .random(seeded(seed * 31 + n.address.port() + 7919L * restarts)).build());
         };
         n.transport = raw;
         TaskProvider provider = world != null && world.placed(n.spec.id()) ? world.tasks(n.spec.id()) : tasks.apply(n.spec.id());
@@ -373,7 +373,8 @@ public final class TeamSimulation {
         return sim;
     }
 
-    Address address(String vehicle) {
+    /** Where {@code vehicle} is attached to the network. */
+    public Address address(String vehicle) {
         return node(vehicle).address;
     }
 
