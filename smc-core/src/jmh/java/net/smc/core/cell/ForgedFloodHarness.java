@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import net.smc.core.host.CellHost;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.net.DatagramPacket;
@@ -22,11 +23,11 @@ import net.smc.core.cell.sim.TeamSimulation;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.security.SecureEndpoint;
-import net.smc.core.transport.StatusClient;
+import net.smc.core.transport.udp.StatusClient;
 import net.smc.core.transport.real.SystemClock;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * A forged-signature flood against an authenticated team on loopback UDP: the reconnaissance team's
