@@ -81,6 +81,32 @@ class InstalledScriptTest {
         assertEquals(143, process.exitValue(), "the JVM's status for SIGTERM");
     }
 
+    @Test
+    void installedSmcRun_aFileOf8MB_runsUnderAHeapOf48MB() throws Exception {
+        Path script = script();
+        assertTrue(Files.isExecutable(script), "the installed smc script is missing at " + script);
+        Path file = dir.resolve("big.p2");
+        int repeats = 200_000;   // 42 bytes each: 8.4 MB, 1.4 million tokens
+        try (var out = Files.newBufferedWriter(file)) {
+            out.write("x := 0.\n");
+            for (int i = 0; i < repeats; i++) {
+                out.write("x := x + 1.\ns := \"a string literal " + (1_000_000 + i) + "\".\n");
+            }
+            out.write("root print: x. root print: s.\n");
+        }
+        ProcessBuilder builder = new ProcessBuilder(script.toString(), "run", file.toString())
+                .redirectErrorStream(true);
+        builder.environment().put("JAVA_OPTS", "-Xmx48m");   // the file's text alone is 8.4 MB of it
+
+        Process process = builder.start();
+        process.getOutputStream().close();
+        String out = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+
+        assertTrue(process.waitFor(120, TimeUnit.SECONDS), "smc did not end within 120 s");
+        assertEquals(repeats + "\na string literal " + (1_000_000 + repeats - 1) + "\n", out);
+        assertEquals(0, process.exitValue());
+    }
+
     private static int freePort() throws IOException {
         try (DatagramSocket probe = new DatagramSocket(new InetSocketAddress("0.0.0.0", 0))) {
             return probe.getLocalPort();
