@@ -107,6 +107,25 @@ class InstalledScriptTest {
         assertEquals(0, process.exitValue());
     }
 
+    @Test
+    void installedSmcRun_onSigterm_endsAnEndlessLoopAndSaysSo() throws Exception {
+        Path script = script();
+        assertTrue(Files.isExecutable(script), "the installed smc script is missing at " + script);
+        Path file = Files.writeString(dir.resolve("loop.p2"), "root print: \"looping\".\n[true] whileTrue: [1 + 1].\n");
+        Path err = dir.resolve("err.log");
+        Process process = new ProcessBuilder(script.toString(), "run", file.toString())
+                .redirectError(err.toFile()).start();
+        process.getOutputStream().close();
+        var out = new java.io.BufferedReader(new java.io.InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
+        assertEquals("looping", out.readLine(), "the loop starts after this line");
+
+        process.destroy();   // SIGTERM
+
+        assertTrue(process.waitFor(30, TimeUnit.SECONDS), "smc run did not end within 30 s of SIGTERM");
+        assertEquals(List.of("smc run: stopped: the process was asked to end (SIGTERM or SIGINT)"), Files.readAllLines(err));
+        assertEquals(143, process.exitValue(), "the JVM's status for SIGTERM");
+    }
+
     private static int freePort() throws IOException {
         try (DatagramSocket probe = new DatagramSocket(new InetSocketAddress("0.0.0.0", 0))) {
             return probe.getLocalPort();

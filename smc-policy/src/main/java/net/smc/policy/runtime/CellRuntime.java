@@ -53,6 +53,8 @@ public final class CellRuntime {
     private boolean booting = true;
     private long attachCounter;
     private Integer exitStatus;
+    /** The status {@link #stop} gave, or -1; set from any thread, read by running executions. */
+    private volatile int stopStatus = -1;
 
     public CellRuntime(Config config) {
         this.config = config;
@@ -131,7 +133,7 @@ public final class CellRuntime {
      */
     public Runnable schedule(long delayMillis, Runnable task) {
         return config.scheduler().schedule(delayMillis, () -> {
-            if (exitStatus != null) {
+            if (exitStatus() != null) {
                 return;
             }
             try {
@@ -146,9 +148,32 @@ public final class CellRuntime {
         });
     }
 
-    /** The status {@code root exit} gave inside a scheduled task, or {@code null}. */
+    /** The status {@code root exit} gave inside a scheduled task, or that {@link #stop} gave, or {@code null}. */
     public Integer exitStatus() {
+        if (exitStatus == null && stopStatus >= 0) {
+            return stopStatus;
+        }
         return exitStatus;
+    }
+
+    /**
+     * Asks the cell to stop; callable from any thread (a signal handler's, say). Whatever the cell
+     * runs (a unit, an event's policies, a timer) ends within {@link Limits#CLOCK_CHECK_INTERVAL}
+     * sends or at its next top-level statement, as if {@code root exit: status} had run there, and
+     * nothing runs after it.
+     *
+     * @throws IllegalArgumentException when {@code status} is negative
+     */
+    public void stop(int status) {
+        if (status < 0) {
+            throw new IllegalArgumentException("stop status is " + status + "; it must be 0 or more");
+        }
+        stopStatus = status;
+    }
+
+    /** The status {@link #stop} gave, or -1 when the cell was not asked to stop. */
+    int stopStatus() {
+        return stopStatus;
     }
 
     /** The names {@code root load:} knows, sorted. */

@@ -99,6 +99,7 @@ public final class Interpreter {
 
     /** Compiles and runs one top-level statement of a unit in the unit's frame; answers its value. */
     Object run(Node statement, VariableFrame frame) {
+        frame.ex.checkStop();
         return compile(statement).exec(frame);
     }
 
