@@ -106,7 +106,7 @@ final class Inbound {
             e.stats.hellosOffered++;
             event = ControlEvent.HANDSHAKE_OFFERED;
         }
-        boolean answeredLately = p.helloSentMillis != Peer.NEVER && now - p.helloSentMillis < e.settings.handshakeRetryMillis();
+        boolean answeredLately = p.helloSentMillis != PeerState.NEVER && now - p.helloSentMillis < e.settings.handshakeRetryMillis();
         byte[] reply = null;
         if (!echoed || keys != null || !answeredLately) {
             p.helloSentMillis = now;

@@ -166,11 +166,11 @@ public final class SecureTransport implements AuthenticatingTransport {
      * (say {@code UdpTransport.setUrgent}); the claim is proven later, by the MAC.
      */
     public static boolean isSessionTraffic(byte[] datagram) {
-        if (datagram.length < 2 || datagram[0] != Envelope.VERSION) {
+        if (datagram.length < 2 || datagram[0] != FrameCodec.VERSION) {
             return false;
         }
         int kind = datagram[1];
-        return kind == Envelope.PAIR_MAC || kind == Envelope.TEAM_MAC || kind == Envelope.TEAM_KEY;
+        return kind == FrameCodec.PAIR_MAC || kind == FrameCodec.TEAM_MAC || kind == FrameCodec.TEAM_KEY;
     }
 
     /** Signed datagrams dropped unchecked because their source (or all sources) spent the signature budget. */
