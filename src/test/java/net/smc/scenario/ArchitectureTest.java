@@ -33,8 +33,7 @@ class ArchitectureTest {
      * that is fixed (delete its line then). smc-core still reaches into the engine's inside for
      * managed objects, domains, call contexts, policies, event templates, managed classes and values,
      * which are entangled with the interpreter and not yet in {@code net.smc.policy.api} (issue 9).
-     * The runtime installs the standard objects of {@code stdlib}, which are built on the runtime; in
-     * smc-sim the world makes and steps its robots, and a robot reads the world (arena, hazards, rays).
+     * In smc-sim the world makes and steps its robots, and a robot reads the world (arena, hazards, rays).
      */
     private static final List<String> KNOWN_DEBT = List.of(
             inside("discovery/DiscoveryObject"),
@@ -48,8 +47,6 @@ class ArchitectureTest {
             inside("task/Task"),
             inside("task/TaskDescriber"),
             inside("task/TaskEvents"),
-            "package cycle: net.smc.policy.runtime -> net.smc.policy.stdlib (smc-policy/src/main/java/net/smc/policy/runtime/CellRuntime.java),"
-                    + " net.smc.policy.stdlib -> net.smc.policy.runtime (smc-policy/src/main/java/net/smc/policy/stdlib/CsvHash.java)",
             "package cycle: net.smc.sim.robot -> net.smc.sim.world (smc-sim/src/main/java/net/smc/sim/robot/ChemicalNose.java),"
                     + " net.smc.sim.world -> net.smc.sim.robot (smc-sim/src/main/java/net/smc/sim/world/SimWorld.java)");
 

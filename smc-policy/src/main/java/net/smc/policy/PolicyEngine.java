@@ -8,6 +8,7 @@ import net.smc.policy.api.AuthMode;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -27,6 +28,7 @@ import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.runtime.Values;
+import net.smc.policy.stdlib.StandardObjects;
 
 /**
  * Start here: one self-managed cell's policy engine, embeddable on its own. It runs PonderTalk
@@ -139,8 +141,11 @@ public final class PolicyEngine {
 
         public PolicyEngine build() {
             TimerQueue queue = scheduler == null ? new TimerQueue(clock) : null;
+            Map<String, Class<?>> loadable = new LinkedHashMap<>(StandardObjects.classes());
+            loadable.putAll(classes);
             return new PolicyEngine(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
-                    repository, Map.copyOf(classes), scheduler == null ? queue : scheduler, arguments)), queue);
+                    repository, Collections.unmodifiableMap(loadable), scheduler == null ? queue : scheduler, arguments,
+                    StandardObjects::parseXml)), queue);
         }
     }
 

@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
 import net.smc.policy.api.AuthMode;
@@ -20,7 +21,6 @@ import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.Limits;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.api.TimerScheduler;
-import net.smc.policy.stdlib.StandardObjects;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
 import net.smc.policy.lang.SourceFiles;
@@ -35,10 +35,16 @@ import net.smc.policy.lang.Unit;
  * {@link net.smc.policy.PolicyEngine}.
  */
 public final class CellRuntime {
-    /** Configuration given by the embedding application. */
+    /**
+     * Configuration given by the embedding application.
+     *
+     * @param classes the loadable classes beyond the built-in kinds (the standard objects among them), in order
+     * @param xml     parses XML text into a PonderTalk value ({@code "..." asXML})
+     */
     public record Config(Consumer<String> output, Consumer<Diagnostic> errors, AuthMode auth, LongSupplier clock,
                          RandomGenerator random, Limits limits, PolicyRepository repository,
-                         Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments) {
+                         Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments,
+                         Function<String, Object> xml) {
     }
 
     private final Config config;
@@ -62,7 +68,6 @@ public final class CellRuntime {
         registry.put("ObligationPolicy", ObligationPolicy.class);
         registry.put("AuthorisationPolicy", AuthorisationPolicy.class);
         registry.put("DateTime", DateTime.class);
-        registry.putAll(StandardObjects.classes());
         config.classes().forEach(this::register);
         this.root = new Root(this);
         Domain factory = new Domain(this);
@@ -107,6 +112,11 @@ public final class CellRuntime {
 
     public Limits limits() {
         return config.limits();
+    }
+
+    /** Parses XML text into a PonderTalk value, as the embedding engine configured. */
+    Object parseXml(String text) {
+        return config.xml().apply(text);
     }
 
     public LongSupplier clock() {
