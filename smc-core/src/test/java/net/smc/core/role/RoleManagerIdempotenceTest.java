@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
-import net.smc.policy.runtime.Domain;
+import net.smc.policy.api.DomainHandle;
 import org.junit.jupiter.api.Test;
 
 class RoleManagerIdempotenceTest {
@@ -34,7 +34,7 @@ class RoleManagerIdempotenceTest {
         f.roles.load(surveyor().build());
         f.roles.load(surveyor().build());
 
-        assertEquals(1, ((Domain) f.cell.resolve("root/role/surveyor/policy")).entries().size());
+        assertEquals(1, ((DomainHandle) f.cell.resolve("root/role/surveyor/policy")).entries().size());
         f.go(3);
         assertEquals(List.of("a 3"), f.out);
     }

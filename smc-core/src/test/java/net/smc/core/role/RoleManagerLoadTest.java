@@ -8,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import net.smc.policy.runtime.AuthorisationPolicy;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 import net.smc.policy.runtime.ObligationPolicy;
 import org.junit.jupiter.api.Test;
 
@@ -38,8 +38,8 @@ class RoleManagerLoadTest {
 
         assertInstanceOf(ObligationPolicy.class, f.cell.resolve("root/role/surveyor/policy/steer"));
         assertInstanceOf(AuthorisationPolicy.class, f.cell.resolve("root/role/surveyor/auth/maySteer"));
-        assertSame(explorer, ((ManagedObject) f.cell.resolve("root/role/surveyor/task/Explorer")).impl());
-        assertInstanceOf(Domain.class, f.cell.resolve("root/role/surveyor/peers"));
+        assertSame(explorer, ((Handle) f.cell.resolve("root/role/surveyor/task/Explorer")).impl());
+        assertInstanceOf(DomainHandle.class, f.cell.resolve("root/role/surveyor/peers"));
     }
 
     @Test
@@ -87,7 +87,7 @@ class RoleManagerLoadTest {
         f.roles.load(Role.builder("surveyor").mission(Fixture.printer("surveyor", "s")).build());
         f.roles.load(Role.builder("relay").mission(Fixture.printer("relay", "r")).build());
 
-        assertEquals(List.of("surveyor", "relay"), List.copyOf(((Domain) f.cell.resolve("root/role")).entries().keySet()));
+        assertEquals(List.of("surveyor", "relay"), List.copyOf(((DomainHandle) f.cell.resolve("root/role")).entries().keySet()));
         f.go(1);
         assertEquals(List.of("s 1", "r 1"), f.out);
         assertEquals(List.of("surveyor", "relay"), List.copyOf(f.roles.loadedRoles()));

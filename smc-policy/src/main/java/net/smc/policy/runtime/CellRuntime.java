@@ -55,7 +55,7 @@ public final class CellRuntime {
     private final Map<String, Path> files = new HashMap<>();
     private final Authoriser authoriser;
     private final List<Consumer<Diagnostic>> listeners = new ArrayList<>();
-    private final List<Consumer<ManagedObject>> creationListeners = new ArrayList<>();
+    private final List<Consumer<? super ManagedObject>> creationListeners = new ArrayList<>();
     private boolean booting = true;
     private long attachCounter;
     private Integer exitStatus;
@@ -100,6 +100,11 @@ public final class CellRuntime {
                     + String.join(", ", new java.util.TreeSet<>(registry.keySet())));
         }
         return factories.computeIfAbsent(name, n -> factoryFor(type));
+    }
+
+    /** A new domain that also answers the {@code @Op} operations of {@code extension}, which run on it. */
+    public Domain newDomainWith(Object extension) {
+        return new Domain(this, ManagedClass.withOperationsOf(Domain.class, extension));
     }
 
     public Root root() {
@@ -263,16 +268,16 @@ public final class CellRuntime {
      * Tells {@code listener} of every obligation and authorisation policy created from now on,
      * however it was created (a factory, {@code root load:}, Java), until {@link #unlistenCreations}.
      */
-    public void listenCreations(Consumer<ManagedObject> listener) {
+    public void listenCreations(Consumer<? super ManagedObject> listener) {
         creationListeners.add(listener);
     }
 
-    public void unlistenCreations(Consumer<ManagedObject> listener) {
+    public void unlistenCreations(Consumer<? super ManagedObject> listener) {
         creationListeners.remove(listener);
     }
 
     void created(ManagedObject policy) {
-        for (Consumer<ManagedObject> listener : List.copyOf(creationListeners)) {
+        for (Consumer<? super ManagedObject> listener : List.copyOf(creationListeners)) {
             listener.accept(policy);
         }
     }
