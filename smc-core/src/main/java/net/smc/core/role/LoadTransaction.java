@@ -64,7 +64,7 @@ final class LoadTransaction {
      * @return the record of the loaded role (the existing one, extended, on a second load)
      * @throws RoleLoadException with the cell as it was before
      */
-    LoadedRole run() {
+    LoadedRole run() throws RoleLoadException {
         TreeSnapshot base = TreeSnapshot.of(root);
         PolicyFactoryTap.Installed tap = PolicyFactoryTap.install(cell);
         RoleObject object = null;
@@ -78,11 +78,14 @@ final class LoadTransaction {
             tap.close();
             activate(object);
             startTasks();
+        } catch (RoleLoadException e) {
+            tap.close();
+            rollBack(base);
+            throw e;
         } catch (RuntimeException e) {
             tap.close();
             rollBack(base);
-            throw e instanceof RoleLoadException failure ? failure
-                    : new RoleLoadException(role.name(), "the Role-Manager", List.of(e.toString()));
+            throw new RoleLoadException(role.name(), "the Role-Manager", List.of(e.toString()));
         }
         return commit(object);
     }
@@ -101,7 +104,7 @@ final class LoadTransaction {
         return role.tasks().stream().filter(t -> existing == null || !existing.tasks.containsKey(t.name())).toList();
     }
 
-    private RoleObject roleObject() {
+    private RoleObject roleObject() throws RoleLoadException {
         if (existing != null) {
             return existing.object;
         }
@@ -126,7 +129,7 @@ final class LoadTransaction {
         return object;
     }
 
-    private void bindTasks(RoleObject object) {
+    private void bindTasks(RoleObject object) throws RoleLoadException {
         DomainHandle taskDomain = object.part(RoleObject.TASK);
         TreeSnapshot before = TreeSnapshot.of(root);
         for (TaskBinding binding : missingTasks()) {
@@ -164,7 +167,7 @@ final class LoadTransaction {
         }
     }
 
-    private void checkLocalInterface(RoleObject object) {
+    private void checkLocalInterface(RoleObject object) throws RoleLoadException {
         DomainHandle taskDomain = object.part(RoleObject.TASK);
         for (TaskOperation op : role.local().operations()) {
             Object handle = taskDomain.get(op.task());
@@ -176,7 +179,7 @@ final class LoadTransaction {
         }
     }
 
-    private void runSource(PolicySource source, RoleObject object, PolicyFactoryTap.Installed tap) {
+    private void runSource(PolicySource source, RoleObject object, PolicyFactoryTap.Installed tap) throws RoleLoadException {
         String part = "policy '" + source.label() + "'";
         TreeSnapshot before = TreeSnapshot.of(root);
         RunResult result = source.runIn(cell);
@@ -208,7 +211,7 @@ final class LoadTransaction {
 
     /** New entries of the role's policy or auth domain must be policies of the right kind. */
     private void checkOwnPart(String part, RoleObject object, String name, boolean obligations, TreeSnapshot before,
-                              List<String> added) {
+                              List<String> added) throws RoleLoadException {
         DomainHandle domain = object.part(name);
         Map<String, Object> earlier = before.entriesOf(domain);
         for (Map.Entry<String, Object> e : domain.entries().entrySet()) {
@@ -234,7 +237,7 @@ final class LoadTransaction {
         }
     }
 
-    private void startTasks() {
+    private void startTasks() throws RoleLoadException {
         for (Map.Entry<String, Task> e : newTasks.entrySet()) {
             started.add(e.getValue());
             try {

@@ -93,7 +93,7 @@ public final class RoleManager {
      * @throws RoleLoadException when any part fails; the cell is then as it was
      * @throws IllegalStateException when called while another load runs (from a task started by it, say)
      */
-    public Loaded load(Role role) {
+    public Loaded load(Role role) throws RoleLoadException {
         Objects.requireNonNull(role, "role");
         if (loading) {
             throw new IllegalStateException("role '" + role.name() + "' cannot be loaded while another role is loading");

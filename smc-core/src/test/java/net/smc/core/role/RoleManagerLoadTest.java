@@ -33,7 +33,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_putsPoliciesAuthorisationsAndTasksUnderTheRoleDomain() {
+    void load_putsPoliciesAuthorisationsAndTasksUnderTheRoleDomain() throws Exception {
         f.roles.load(surveyor());
 
         assertInstanceOf(ObligationPolicy.class, f.cell.resolve("root/role/surveyor/policy/steer"));
@@ -43,7 +43,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_reportsWhatItAdded() {
+    void load_reportsWhatItAdded() throws Exception {
         Loaded loaded = f.roles.load(surveyor());
 
         assertEquals(new Loaded("surveyor", List.of("steer", "maySteer"), List.of("steer"), List.of("maySteer"),
@@ -52,7 +52,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_enablesThePoliciesAndStartsTheTasks() {
+    void load_enablesThePoliciesAndStartsTheTasks() throws Exception {
         f.roles.load(surveyor());
 
         assertTrue(((ObligationPolicy) f.cell.resolve("root/role/surveyor/policy/steer")).isActive());
@@ -62,7 +62,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void loadedRole_actsUnderItsOwnAuthorisations() {
+    void loadedRole_actsUnderItsOwnAuthorisations() throws Exception {
         f.roles.load(surveyor());
 
         f.go(7);
@@ -72,7 +72,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void loadedRole_withoutItsAuthorisation_isDeniedByDefault() {
+    void loadedRole_withoutItsAuthorisation_isDeniedByDefault() throws Exception {
         f.roles.load(Role.builder("surveyor").mission(STEER).task("Explorer", () -> explorer).build());
 
         f.go(7);
@@ -83,7 +83,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_makesTheRoleDomainOnce_forSeveralRoles() {
+    void load_makesTheRoleDomainOnce_forSeveralRoles() throws Exception {
         f.roles.load(Role.builder("surveyor").mission(Fixture.printer("surveyor", "s")).build());
         f.roles.load(Role.builder("relay").mission(Fixture.printer("relay", "r")).build());
 
@@ -94,7 +94,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_runsPolicyFilesInOrder_missionBeforeAuthorisations() {
+    void load_runsPolicyFilesInOrder_missionBeforeAuthorisations() throws Exception {
         f.roles.load(Role.builder("surveyor")
                 .authorisation(PolicySource.text("auth", "root print: \"auth\"."))
                 .mission(PolicySource.text("mission", "root print: \"mission\"."))
@@ -104,7 +104,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void roleDescription_isAvailableWhileLoaded() {
+    void roleDescription_isAvailableWhileLoaded() throws Exception {
         Role role = surveyor();
         f.roles.load(role);
 
