@@ -16,7 +16,7 @@ import net.smc.core.cell.Missions;
 import net.smc.core.role.TaskProvider;
 import net.smc.core.task.Task;
 import net.smc.core.task.TaskInterface;
-import net.smc.policy.runtime.Domain;
+import net.smc.policy.api.DomainHandle;
 import net.smc.policy.api.Op;
 import org.junit.jupiter.api.Test;
 
@@ -151,7 +151,7 @@ class RoleTasksTest {
     }
 
     private static Object atRootTask(Cell cell, String name) {
-        return cell.engine().root().get("task") instanceof Domain d ? d.get(name) : null;
+        return cell.engine().root().get("task") instanceof DomainHandle d ? d.get(name) : null;
     }
 
     @Test
