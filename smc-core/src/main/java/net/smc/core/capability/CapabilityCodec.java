@@ -4,6 +4,7 @@ import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SortedSet;
+import net.smc.core.wire.WireProblem;
 
 /**
  * The wire form of capability summaries (discovery replies) and full descriptions (replies to a
@@ -79,14 +80,14 @@ public final class CapabilityCodec {
 
     /** @throws IllegalArgumentException when a field is null, not well-formed Unicode or over a limit (named) */
     public byte[] encode(CapabilitySummary summary) {
-        CapabilityWireWriter w = header(SUMMARY, SUMMARY_NAME, summary.vehicle(), summary.resources());
+        CapabilityWriter w = header(SUMMARY, SUMMARY_NAME, summary.vehicle(), summary.resources());
         w.strings(summary.tasks(), "tasks");
         return w.bytes();
     }
 
     /** @throws IllegalArgumentException when a field is null, not well-formed Unicode or over a limit (named) */
     public byte[] encode(CapabilityDescription description) {
-        CapabilityWireWriter w = header(DESCRIPTION, DESCRIPTION_NAME, description.vehicle(), description.resources());
+        CapabilityWriter w = header(DESCRIPTION, DESCRIPTION_NAME, description.vehicle(), description.resources());
         List<TaskDescription> tasks = description.tasks();
         w.count(tasks.size(), "tasks");
         for (int t = 0; t < tasks.size(); t++) {
@@ -114,8 +115,8 @@ public final class CapabilityCodec {
         return w.bytes();
     }
 
-    private CapabilityWireWriter header(int kind, String what, String vehicle, SortedSet<String> resources) {
-        CapabilityWireWriter w = new CapabilityWireWriter(limits, what);
+    private CapabilityWriter header(int kind, String what, String vehicle, SortedSet<String> resources) {
+        CapabilityWriter w = new CapabilityWriter(limits, what);
         w.u8(kind);
         w.u8(VERSION);
         w.string(vehicle, "vehicle");
@@ -144,20 +145,18 @@ public final class CapabilityCodec {
      * an error; bytes after it are left for the caller (the form delimits itself).
      */
     public CapabilitySummary readSummary(ByteBuffer buffer) throws CapabilityFormatException {
-        ByteBuffer in = buffer.duplicate();   // big-endian, whatever the caller's order
-        CapabilityWireReader r = new CapabilityWireReader(in, limits, SUMMARY_NAME);
+        CapabilityReader r = CapabilityReader.of(buffer, limits, SUMMARY_NAME);
         readHeader(r, SUMMARY);
         String vehicle = r.string("vehicle");
         SortedSet<String> resources = r.sortedSet("resources");
         SortedSet<String> tasks = r.sortedSet("tasks");
-        buffer.position(in.position());
+        buffer.position(buffer.position() + r.offset());
         return new CapabilitySummary(vehicle, resources, tasks);
     }
 
     /** Reads one description from the buffer's position, as {@link #readSummary(ByteBuffer)} does. */
     public CapabilityDescription readDescription(ByteBuffer buffer) throws CapabilityFormatException {
-        ByteBuffer in = buffer.duplicate();
-        CapabilityWireReader r = new CapabilityWireReader(in, limits, DESCRIPTION_NAME);
+        CapabilityReader r = CapabilityReader.of(buffer, limits, DESCRIPTION_NAME);
         readHeader(r, DESCRIPTION);
         String vehicle = r.string("vehicle");
         SortedSet<String> resources = r.sortedSet("resources");
@@ -166,11 +165,11 @@ public final class CapabilityCodec {
         for (int t = 0; t < taskCount; t++) {
             tasks.add(readTask(r, "tasks[" + t + "]"));
         }
-        buffer.position(in.position());
+        buffer.position(buffer.position() + r.offset());
         return new CapabilityDescription(vehicle, resources, tasks);
     }
 
-    private static TaskDescription readTask(CapabilityWireReader r, String at) throws CapabilityFormatException {
+    private static TaskDescription readTask(CapabilityReader r, String at) throws CapabilityFormatException {
         String name = r.string(at + ".task");
         int opCount = r.count(at + ".operations");
         List<OperationDescription> ops = new ArrayList<>();
@@ -194,16 +193,16 @@ public final class CapabilityCodec {
         return new TaskDescription(name, ops, events);
     }
 
-    private static void readHeader(CapabilityWireReader r, int kind) throws CapabilityFormatException {
+    private static void readHeader(CapabilityReader r, int kind) throws CapabilityFormatException {
         int found = r.u8("kind");
         if (found != kind) {
             String seen = found == SUMMARY ? "a " + SUMMARY_NAME : found == DESCRIPTION ? "a " + DESCRIPTION_NAME
                     : String.format("0x%02x", found);
-            throw r.error(0, "kind", "expected '" + (char) kind + "', found " + seen);
+            throw r.error(WireProblem.MALFORMED, 0, "kind", "expected '" + (char) kind + "', found " + seen);
         }
         int version = r.u8("version");
         if (version != VERSION) {
-            throw r.error(1, "version", "version " + version + " is not supported; this reader knows version " + VERSION);
+            throw r.error(WireProblem.MALFORMED, 1, "version", "version " + version + " is not supported; this reader knows version " + VERSION);
         }
     }
 

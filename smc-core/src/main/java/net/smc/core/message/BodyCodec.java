@@ -2,6 +2,7 @@ package net.smc.core.message;
 
 import java.util.ArrayList;
 import java.util.List;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * The payload codec of one message type: how its record's fields follow each other on the wire.
@@ -11,13 +12,13 @@ import java.util.List;
 final class BodyCodec<M extends Message> {
     @FunctionalInterface
     interface Writer<M> {
-        void write(M message, WireWriter w);
+        void write(M message, ByteWriter w);
     }
 
     @FunctionalInterface
     interface Reader<M> {
         /** Reads the fields and builds the record, whose constructor may refuse them. */
-        M read(WireReader r) throws DecodeException;
+        M read(DatagramReader r) throws DecodeException;
     }
 
     private static final BodyCodec<?>[] BY_TYPE = register();
@@ -38,11 +39,11 @@ final class BodyCodec<M extends Message> {
         return BY_TYPE[type.ordinal()];
     }
 
-    void write(Message message, WireWriter w) {
+    void write(Message message, ByteWriter w) {
         writer.write(recordClass.cast(message), w);
     }
 
-    Message read(WireReader r) throws DecodeException {
+    Message read(DatagramReader r) throws DecodeException {
         return reader.read(r);
     }
 

@@ -4,6 +4,7 @@ import java.nio.ByteBuffer;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilityFormatException;
 import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * Capability summaries and descriptions on the wire: the capability package's own self-delimiting
@@ -19,19 +20,19 @@ final class CapabilityBodies {
     private CapabilityBodies() {
     }
 
-    static void writeSummary(CapabilitySummary s, WireWriter w) {
+    static void writeSummary(CapabilitySummary s, ByteWriter w) {
         w.bytes(FORMS.encode(s));
     }
 
-    static CapabilitySummary readSummary(WireReader r) throws DecodeException {
+    static CapabilitySummary readSummary(DatagramReader r) throws DecodeException {
         return read(r, "summary", FORMS::readSummary);
     }
 
-    static void writeDescription(CapabilityDescription d, WireWriter w) {
+    static void writeDescription(CapabilityDescription d, ByteWriter w) {
         w.bytes(FORMS.encode(d));
     }
 
-    static CapabilityDescription readDescription(WireReader r) throws DecodeException {
+    static CapabilityDescription readDescription(DatagramReader r) throws DecodeException {
         return read(r, "description", FORMS::readDescription);
     }
 
@@ -40,7 +41,7 @@ final class CapabilityBodies {
         T read(ByteBuffer form) throws CapabilityFormatException;
     }
 
-    private static <T> T read(WireReader r, String field, FormReader<T> reader) throws DecodeException {
+    private static <T> T read(DatagramReader r, String field, FormReader<T> reader) throws DecodeException {
         ByteBuffer form = ByteBuffer.wrap(r.array(), r.position(), r.remaining());
         try {
             T value = reader.read(form);

@@ -8,7 +8,7 @@ package net.smc.core.message;
  */
 record FragmentHeader(MessageType type, int index, int count, int total) {
 
-    static FragmentHeader read(WireReader r) throws DecodeException {
+    static FragmentHeader read(DatagramReader r) throws DecodeException {
         int code = r.u8("fragment type");
         int index = r.u16("fragment index");
         int count = r.u16("fragment count");

@@ -1,6 +1,7 @@
 package net.smc.core.message;
 
 import java.nio.ByteBuffer;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * Splits a payload too large for one datagram into fragment frames, and holds the arithmetic that
@@ -53,9 +54,9 @@ final class Fragmenter {
             int p = Header.write(datagram, 0, WireFormat.FRAGMENT_CODE, sender, senderBytes, id,
                     WireFormat.FRAGMENT_HEADER + len);
             datagram[p] = (byte) type.code();
-            WireWriter.putU16(datagram, p + 1, i);
-            WireWriter.putU16(datagram, p + 3, count);
-            WireWriter.putI32(datagram, p + 5, total);
+            ByteWriter.putU16(datagram, p + 1, i);
+            ByteWriter.putU16(datagram, p + 3, count);
+            ByteWriter.putI32(datagram, p + 5, total);
             System.arraycopy(payload, off + offset(i, count, total), datagram, p + WireFormat.FRAGMENT_HEADER, len);
             view.clear().limit(p + WireFormat.FRAGMENT_HEADER + len);
             sink.datagram(view);

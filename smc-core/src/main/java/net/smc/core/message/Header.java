@@ -1,5 +1,7 @@
 package net.smc.core.message;
 
+import net.smc.core.wire.ByteWriter;
+
 /**
  * The fixed header in front of every datagram:
  * <pre>
@@ -25,13 +27,13 @@ final class Header {
      * Returns the position after it, where the payload starts.
      */
     static int write(byte[] dst, int at, int typeCode, String sender, int senderBytes, long id, int payloadLength) {
-        WireWriter.putU16(dst, at, WireFormat.MAGIC);
+        ByteWriter.putU16(dst, at, WireFormat.MAGIC);
         dst[at + 2] = (byte) WireFormat.VERSION;
         dst[at + 3] = (byte) typeCode;
         dst[at + 4] = (byte) senderBytes;
         int p = Utf8.encode(sender, dst, at + 5);
-        WireWriter.putI64(dst, p, id);
-        WireWriter.putU16(dst, p + 8, payloadLength);
+        ByteWriter.putI64(dst, p, id);
+        ByteWriter.putU16(dst, p + 8, payloadLength);
         return p + 10;
     }
 
@@ -40,7 +42,7 @@ final class Header {
      * newer format is named as such), then the sender and id, then that the payload length is
      * exactly what remains of the datagram.
      */
-    void read(WireReader r) throws DecodeException {
+    void read(DatagramReader r) throws DecodeException {
         sender = null;
         int magic = r.u16("magic");
         if (magic != WireFormat.MAGIC) {

@@ -25,7 +25,7 @@ public final class MessageDecoder {
 
     private final LongSupplier clock;
     private final Reassembler reassembler;
-    private final WireReader reader = new WireReader();
+    private final DatagramReader reader = new DatagramReader();
     private final Header header = new Header();
     /** A copy of a datagram that arrived in a buffer without an accessible array. */
     private final byte[] copy = new byte[WireFormat.MAX_DATAGRAM];

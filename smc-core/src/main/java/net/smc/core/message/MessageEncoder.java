@@ -3,6 +3,7 @@ package net.smc.core.message;
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * Turns an {@link Envelope} into datagrams in the <a href="doc-files/wire-format.md">wire format</a>:
@@ -20,7 +21,7 @@ public final class MessageEncoder {
 
     private final byte[] scratch = new byte[HEADROOM + WireFormat.MAX_PAYLOAD];
     private final ByteBuffer scratchView = ByteBuffer.wrap(scratch).asReadOnlyBuffer();
-    private final WireWriter writer = new WireWriter(scratch);
+    private final ByteWriter writer = new ByteWriter(scratch, () -> PayloadOverflow.INSTANCE);
     private final Fragmenter fragmenter = new Fragmenter();
     private long messages;
     private long datagrams;
@@ -114,11 +115,21 @@ public final class MessageEncoder {
         writer.reset(HEADROOM, scratch.length);
         try {
             BodyCodec.of(envelope.type()).write(envelope.body(), writer);
-        } catch (WireWriter.Overflow e) {
+        } catch (PayloadOverflow e) {
             throw new IllegalArgumentException(describe(envelope) + ": its payload exceeds " + WireFormat.MAX_PAYLOAD
                     + " bytes, the limit of one message");
         }
         return writer.position() - HEADROOM;
+    }
+
+    /** Thrown by the writer when a payload does not fit; carries nothing, so one instance serves. */
+    private static final class PayloadOverflow extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        static final PayloadOverflow INSTANCE = new PayloadOverflow();
+
+        private PayloadOverflow() {
+            super("payload overflow", null, false, false);
+        }
     }
 
     private static String describe(Envelope e) {

@@ -2,6 +2,7 @@ package net.smc.core.message;
 
 import java.util.ArrayList;
 import java.util.List;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * Payloads of the team-formation messages: discovery, capabilities, role assignment, status and
@@ -120,7 +121,7 @@ final class TeamBodies {
     static final List<BodyCodec<?>> ALL = List.of(DISCOVERY, DISCOVERY_REPLY, CAPABILITY_REQUEST, CAPABILITY_REPLY,
             ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, STATUS, LEAVE, ROSTER);
 
-    private static RoleAssignment readRoleAssignment(WireReader r) throws DecodeException {
+    private static RoleAssignment readRoleAssignment(DatagramReader r) throws DecodeException {
         String mission = r.name("mission");
         String role = r.name("role");
         Identity identity = new Identity(mission, r.i32("identity.level"), r.i32("identity.sequence"));
@@ -141,14 +142,14 @@ final class TeamBodies {
                 readNames(r, "ancestors"));
     }
 
-    private static void writeNames(List<String> names, WireWriter w) {
+    private static void writeNames(List<String> names, ByteWriter w) {
         w.u8(names.size());
         for (String n : names) {
             w.string8(n);
         }
     }
 
-    private static List<String> readNames(WireReader r, String field) throws DecodeException {
+    private static List<String> readNames(DatagramReader r, String field) throws DecodeException {
         int n = r.count(field, RoleAssignment.MAX_ANCESTORS, 2);
         List<String> names = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
@@ -157,7 +158,7 @@ final class TeamBodies {
         return names;
     }
 
-    private static Roster readRoster(WireReader r) throws DecodeException {
+    private static Roster readRoster(DatagramReader r) throws DecodeException {
         String mission = r.name("mission");
         long epoch = r.i64("epoch");
         int nb = r.count("backups", Roster.MAX_BACKUPS, 1);

@@ -4,6 +4,7 @@ import java.math.BigDecimal;
 import java.math.BigInteger;
 import java.util.ArrayList;
 import java.util.List;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * PonderTalk values on the wire: a tag byte, then the value.
@@ -28,14 +29,14 @@ final class ValueCodec {
     private ValueCodec() {
     }
 
-    static void writeList(List<?> values, WireWriter w) {
+    static void writeList(List<?> values, ByteWriter w) {
         w.u8(values.size());
         for (Object v : values) {
             write(v, w);
         }
     }
 
-    static void write(Object v, WireWriter w) {
+    static void write(Object v, ByteWriter w) {
         if (v == null) {
             w.u8(NIL);
         } else if (v instanceof Boolean b) {
@@ -59,11 +60,11 @@ final class ValueCodec {
     }
 
     /** A list of values at depth 0 (a message's arguments or event values). */
-    static List<Object> readList(WireReader r, String field) throws DecodeException {
+    static List<Object> readList(DatagramReader r, String field) throws DecodeException {
         return readList(r, field, 0);
     }
 
-    private static List<Object> readList(WireReader r, String field, int depth) throws DecodeException {
+    private static List<Object> readList(DatagramReader r, String field, int depth) throws DecodeException {
         int n = r.count(field, WireFormat.MAX_VALUES, 1);
         List<Object> list = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
@@ -72,11 +73,11 @@ final class ValueCodec {
         return list;
     }
 
-    static Object read(WireReader r, String field) throws DecodeException {
+    static Object read(DatagramReader r, String field) throws DecodeException {
         return read(r, field, 0);
     }
 
-    private static Object read(WireReader r, String field, int depth) throws DecodeException {
+    private static Object read(DatagramReader r, String field, int depth) throws DecodeException {
         int tag = r.u8(field);
         switch (tag) {
             case NIL:
@@ -101,7 +102,7 @@ final class ValueCodec {
         }
     }
 
-    private static BigDecimal number(WireReader r, String field) throws DecodeException {
+    private static BigDecimal number(DatagramReader r, String field) throws DecodeException {
         int scale = r.i32(field);
         int len = r.u8(field);
         if (len == 0) {

@@ -1,7 +1,10 @@
 package net.smc.core.security;
 
-import java.nio.ByteBuffer;
+import java.nio.BufferOverflowException;
 import java.nio.charset.StandardCharsets;
+import net.smc.core.wire.ByteReader;
+import net.smc.core.wire.ByteWriter;
+import net.smc.core.wire.WireProblem;
 
 /**
  * The binary form of a {@link Credential}, version 1 (big-endian):
@@ -35,11 +38,22 @@ final class CredentialCodec {
     static byte[] body(Claims claims, KeyId authority) {
         byte[] id = WireNames.encode(claims.vehicleId(), "credential", "vehicle id");
         byte[] mission = WireNames.encode(claims.mission(), "credential", "mission");
-        ByteBuffer out = ByteBuffer.allocate(FIXED_BYTES - SigningKey.SIGNATURE_BYTES + id.length + mission.length);
-        out.put((byte) VERSION).put((byte) id.length).put(id).put(claims.vehicleKey().bytes())
-                .put((byte) mission.length).put(mission)
-                .putLong(claims.notBeforeMillis()).putLong(claims.expiresMillis()).putLong(authority.value());
+        ByteWriter out = exact(FIXED_BYTES - SigningKey.SIGNATURE_BYTES + id.length + mission.length);
+        out.u8(VERSION);
+        out.u8(id.length);
+        out.bytes(id);
+        out.bytes(claims.vehicleKey().bytes());
+        out.u8(mission.length);
+        out.bytes(mission);
+        out.i64(claims.notBeforeMillis());
+        out.i64(claims.expiresMillis());
+        out.i64(authority.value());
         return out.array();
+    }
+
+    /** A writer of exactly {@code size} bytes: the security forms compute their size before writing. */
+    static ByteWriter exact(int size) {
+        return new ByteWriter(new byte[size], BufferOverflowException::new);
     }
 
     /** What the authority signs: the context, then the body. */
@@ -60,34 +74,34 @@ final class CredentialCodec {
 
     /** Reads exactly {@code data[offset, offset + length)} as a credential. */
     static Credential decode(byte[] data, int offset, int length) throws Malformed {
-        WireIn in = new WireIn(data, offset, offset + length, "credential");
+        ByteReader<Malformed> in = Malformed.reader(data, offset, offset + length, "credential");
         if (length > MAX_BYTES) {
-            throw in.error(0, "credential", length + " bytes; the limit is " + MAX_BYTES);
+            throw in.error(WireProblem.OVERSIZED, 0, "credential", length + " bytes; the limit is " + MAX_BYTES);
         }
         int version = in.u8("version");
         if (version != VERSION) {
-            throw in.error(0, "version", version + " is not a known version; this reader knows " + VERSION);
+            throw in.error(WireProblem.MALFORMED, 0, "version", version + " is not a known version; this reader knows " + VERSION);
         }
-        String vehicleId = in.name("vehicle id");
+        String vehicleId = WireNames.read(in, "vehicle id");
         int keyAt = in.offset();
         byte[] key = in.bytes(VerificationKey.BYTES, "vehicle key");
-        String mission = in.name("mission");
+        String mission = WireNames.read(in, "mission");
         int timesAt = in.offset();
         long notBefore = in.i64("not-before");
         long expires = in.i64("expires");
         KeyId authority = new KeyId(in.i64("authority key id"));
         byte[] signature = in.bytes(SigningKey.SIGNATURE_BYTES, "signature");
         if (in.remaining() != 0) {
-            throw in.error(in.offset(), "end", in.remaining() + " bytes after the signature; a credential ends with it");
+            throw in.error(WireProblem.MALFORMED, in.offset(), "end", in.remaining() + " bytes after the signature; a credential ends with it");
         }
         if (expires <= notBefore) {
-            throw in.error(timesAt, "expires", expires + " is not after not-before " + notBefore);
+            throw in.error(WireProblem.MALFORMED, timesAt, "expires", expires + " is not after not-before " + notBefore);
         }
         VerificationKey vehicleKey;
         try {
             vehicleKey = VerificationKey.of(key);
         } catch (IllegalArgumentException e) {
-            throw in.error(keyAt, "vehicle key", e.getMessage());
+            throw in.error(WireProblem.MALFORMED, keyAt, "vehicle key", e.getMessage());
         }
         return new Credential(new Claims(vehicleId, vehicleKey, mission, notBefore, expires), authority, signature);
     }

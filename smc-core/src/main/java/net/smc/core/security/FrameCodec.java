@@ -1,6 +1,8 @@
 package net.smc.core.security;
 
-import java.nio.ByteBuffer;
+import net.smc.core.wire.ByteReader;
+import net.smc.core.wire.ByteWriter;
+import net.smc.core.wire.WireProblem;
 
 /**
  * The wire form of protected datagrams, version 1: what {@link SecureEndpoint} puts around a
@@ -65,17 +67,25 @@ final class FrameCodec {
 
     /** A SIGNED datagram with room for the signature at its end, not yet signed. */
     static byte[] signed(byte[] credential, long timestampMillis, long counter, byte[] payload) {
-        ByteBuffer out = ByteBuffer.allocate(signedOverhead(credential.length) + payload.length);
-        head(out, SIGNED, timestampMillis, counter).put((byte) credential.length).put(credential).put(payload);
+        ByteWriter out = CredentialCodec.exact(signedOverhead(credential.length) + payload.length);
+        head(out, SIGNED, timestampMillis, counter);
+        out.u8(credential.length);
+        out.bytes(credential);
+        out.bytes(payload);
         return out.array();
     }
 
     /** A HELLO with room for the signature, not yet signed; a null {@code echo} is written as zeros. */
     static byte[] hello(byte[] credential, long timestampMillis, long counter, byte[] recipient, byte[] ephemeral, byte[] echo) {
         int size = HEAD + 1 + credential.length + 1 + recipient.length + 2 * Ephemeral.BYTES + SIG;
-        ByteBuffer out = ByteBuffer.allocate(size);
-        head(out, HELLO, timestampMillis, counter).put((byte) credential.length).put(credential)
-                .put((byte) recipient.length).put(recipient).put(ephemeral).put(echo == null ? new byte[Ephemeral.BYTES] : echo);
+        ByteWriter out = CredentialCodec.exact(size);
+        head(out, HELLO, timestampMillis, counter);
+        out.u8(credential.length);
+        out.bytes(credential);
+        out.u8(recipient.length);
+        out.bytes(recipient);
+        out.bytes(ephemeral);
+        out.bytes(echo == null ? new byte[Ephemeral.BYTES] : echo);
         return out.array();
     }
 
@@ -84,12 +94,17 @@ final class FrameCodec {
      * room for the MAC ({@code body} of a TEAM_KEY is the sealed key, tag included, so 0 more).
      */
     static byte[] keyed(int kind, int teamId, byte[] sender, long timestampMillis, long counter, byte[] body, int tagBytes) {
-        ByteBuffer out = ByteBuffer.allocate(keyedHeaderBytes(kind, sender.length) + body.length + tagBytes);
-        out.put((byte) VERSION).put((byte) kind);
+        ByteWriter out = CredentialCodec.exact(keyedHeaderBytes(kind, sender.length) + body.length + tagBytes);
+        out.u8(VERSION);
+        out.u8(kind);
         if (kind == TEAM_MAC) {
-            out.putInt(teamId);
+            out.i32(teamId);
         }
-        out.put((byte) sender.length).put(sender).putLong(timestampMillis).putLong(counter).put(body);
+        out.u8(sender.length);
+        out.bytes(sender);
+        out.i64(timestampMillis);
+        out.i64(counter);
+        out.bytes(body);
         return out.array();
     }
 
@@ -98,8 +113,11 @@ final class FrameCodec {
         return HEAD + 1 + senderBytes + (kind == TEAM_MAC ? TEAM_ID_BYTES : 0);
     }
 
-    private static ByteBuffer head(ByteBuffer out, int kind, long timestampMillis, long counter) {
-        return out.put((byte) VERSION).put((byte) kind).putLong(timestampMillis).putLong(counter);
+    private static void head(ByteWriter out, int kind, long timestampMillis, long counter) {
+        out.u8(VERSION);
+        out.u8(kind);
+        out.i64(timestampMillis);
+        out.i64(counter);
     }
 
     /**
@@ -108,16 +126,16 @@ final class FrameCodec {
      * @throws Malformed naming the kind, the field, its offset and the rule
      */
     static Frame read(byte[] datagram) throws Malformed {
-        WireIn head = new WireIn(datagram, 0, datagram.length, "datagram");
+        ByteReader<Malformed> head = Malformed.reader(datagram, 0, datagram.length, "datagram");
         int version = head.u8("version");
         if (version != VERSION) {
-            throw head.error(0, "version", version + " is not a known version; this reader knows " + VERSION);
+            throw head.error(WireProblem.MALFORMED, 0, "version", version + " is not a known version; this reader knows " + VERSION);
         }
         int kind = head.u8("kind");
         return switch (kind) {
             case SIGNED, HELLO -> readSigned(datagram, kind);
             case PAIR_MAC, TEAM_MAC, TEAM_KEY -> readKeyed(datagram, kind);
-            default -> throw head.error(1, "kind", kind + " is not a known kind; they are 1 to 5");
+            default -> throw head.error(WireProblem.MALFORMED, 1, "kind", kind + " is not a known kind; they are 1 to 5");
         };
     }
 
@@ -127,12 +145,12 @@ final class FrameCodec {
         if (signedLength < HEAD + 1) {
             throw new Malformed(what + ": " + datagram.length + " bytes is too short to hold a header and a signature");
         }
-        WireIn in = new WireIn(datagram, 2, signedLength, what);
+        ByteReader<Malformed> in = Malformed.reader(datagram, 2, signedLength, what);
         long timestamp = in.i64("timestamp");
         long counter = in.i64("counter");
         int credentialLength = in.u8("credential length");
         int at = in.position();
-        in.skip(credentialLength, "credential");
+        in.take(credentialLength, "credential");
         Credential credential;
         try {
             credential = CredentialCodec.decode(datagram, at, credentialLength);
@@ -142,20 +160,20 @@ final class FrameCodec {
         if (kind == SIGNED) {
             return new Frame.Signed(credential, timestamp, counter, datagram, in.position(), signedLength);
         }
-        String recipient = in.name("recipient");
+        String recipient = WireNames.read(in, "recipient");
         byte[] ephemeral = in.bytes(Ephemeral.BYTES, "ephemeral key");
         byte[] echo = in.bytes(Ephemeral.BYTES, "echoed ephemeral key");
         if (in.remaining() != 0) {
-            throw in.error(in.offset(), "signature", "found " + (in.remaining() + SIG) + " bytes; it is " + SIG);
+            throw in.error(WireProblem.MALFORMED, in.offset(), "signature", "found " + (in.remaining() + SIG) + " bytes; it is " + SIG);
         }
         return new Frame.Hello(credential, timestamp, counter, recipient, ephemeral, echo, datagram, signedLength);
     }
 
     private static Frame readKeyed(byte[] datagram, int kind) throws Malformed {
         String what = kindName(kind);
-        WireIn in = new WireIn(datagram, 2, datagram.length, what);
+        ByteReader<Malformed> in = Malformed.reader(datagram, 2, datagram.length, what);
         int teamId = kind == TEAM_MAC ? in.i32("team key id") : 0;
-        String sender = in.name("sender");
+        String sender = WireNames.read(in, "sender");
         long timestamp = in.i64("timestamp");
         long counter = in.i64("counter");
         int bodyStart = in.position();
@@ -163,13 +181,13 @@ final class FrameCodec {
         if (kind == TEAM_KEY) {
             bodyEnd = bodyStart + TEAM_KEY_BYTES + GCM_TAG_BYTES;
             if (datagram.length != bodyEnd) {
-                throw in.error(in.offset(), "sealed team key", "found " + in.remaining() + " bytes; it is "
+                throw in.error(WireProblem.MALFORMED, in.offset(), "sealed team key", "found " + in.remaining() + " bytes; it is "
                         + (TEAM_KEY_BYTES + GCM_TAG_BYTES));
             }
         } else {
             bodyEnd = datagram.length - MAC;
             if (bodyEnd < bodyStart) {
-                throw in.error(in.offset(), "MAC", "truncated: needs " + MAC + " bytes, " + in.remaining() + " left");
+                throw in.error(WireProblem.TRUNCATED, in.offset(), "MAC", "truncated: needs " + MAC + " bytes, " + in.remaining() + " left");
             }
         }
         return new Frame.Keyed(kind, teamId, sender, timestamp, counter, datagram, bodyStart, bodyEnd);

@@ -5,6 +5,8 @@ import java.nio.CharBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
+import net.smc.core.wire.ByteReader;
+import net.smc.core.wire.WireProblem;
 
 /**
  * The one rule for names on the wire (vehicle ids, missions): 1 to {@value #MAX_BYTES} bytes of
@@ -55,6 +57,20 @@ final class WireNames {
     static String checkPeerId(String value) {
         encode(value, "endpoint", "peer id");
         return value;
+    }
+
+    /** A name: one length byte (1 to {@value #MAX_BYTES}), then UTF-8. */
+    static String read(ByteReader<Malformed> in, String field) throws Malformed {
+        int at = in.offset();
+        int length = in.length8(field);
+        if (length == 0 || length > MAX_BYTES) {
+            throw in.error(WireProblem.OVERSIZED, at, field, "length " + length + "; it must be 1 to " + MAX_BYTES);
+        }
+        String s = decode(in.array(), in.take(length, field), length);
+        if (s == null) {
+            throw in.error(WireProblem.MALFORMED, at, field, "not valid UTF-8");
+        }
+        return s;
     }
 
     /**
