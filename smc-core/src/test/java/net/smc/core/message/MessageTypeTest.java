@@ -16,7 +16,7 @@ class MessageTypeTest {
         int code = 1;
         for (String name : new String[] {"DISCOVERY", "DISCOVERY_REPLY", "CAPABILITY_REQUEST", "CAPABILITY_REPLY",
                 "ROLE_ASSIGNMENT", "ASSIGNMENT_RESPONSE", "POLICY_REQUEST", "POLICY_REPLY", "HEARTBEAT", "ACK",
-                "ROLE_EVENT", "INVOCATION", "INVOCATION_RESULT", "LEAVE", "STATUS", "ACKS", "ROSTER", "SUBTREE_REPORT"}) {
+                "ROLE_EVENT", "INVOCATION", "INVOCATION_RESULT", "LEAVE", "STATUS", "ACKS", "ROSTER", "SUBTREE_REPORT", "CELL_REQUEST"}) {
             expected.put(MessageType.valueOf(name), code++);
         }
         Map<MessageType, Integer> actual = new LinkedHashMap<>();
