@@ -35,9 +35,9 @@ class MessageTypeTest {
 
     @Test
     void fromCode_refusesReservedAndUnassignedCodes() {
-        for (int code : new int[] {0x00, 0x13, WireFormat.FRAGMENT_CODE, -1, 256}) {
+        for (int code : new int[] {0x00, 0x14, WireFormat.FRAGMENT_CODE, -1, 256}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> MessageType.fromCode(code));
-            assertEquals("message type code " + code + " is not assigned; assigned codes are 1 to 18", e.getMessage());
+            assertEquals("message type code " + code + " is not assigned; assigned codes are 1 to 19", e.getMessage());
         }
     }
 }
