@@ -90,6 +90,7 @@ public final class TeamSimulation {
     private final net.smc.policy.api.AuthMode auth;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
+    private final Adversary adversary;
     private int nextPort = 5000;
     private long restarts;
 
@@ -123,14 +124,19 @@ public final class TeamSimulation {
         for (SimVehicle v : b.vehicles) {
             add(v);
         }
+        this.adversary = b.adversary ? new Adversary(network, sim, seed,
+                nodes.values().stream().map(n -> n.address).toList()) : null;
     }
 
     public static Builder builder(Mission mission, PolicyRepository repository, long seed) {
         return new Builder(mission, repository, seed);
     }
 
-    /** Starts every vehicle's cell. */
+    /** Starts every vehicle's cell, and the adversary if there is one. */
     public void start() {
+        if (adversary != null) {
+            adversary.start();
+        }
         for (Node n : nodes.values()) {
             if (n.cell == null) {
                 boot(n, n.spec.commander());
@@ -140,7 +146,11 @@ public final class TeamSimulation {
 
     /** Adds a vehicle and starts it now. */
     public void join(SimVehicle vehicle) {
-        boot(add(vehicle), vehicle.commander());
+        Node n = add(vehicle);
+        if (adversary != null) {
+            adversary.target(n.address);
+        }
+        boot(n, vehicle.commander());
     }
 
     private Node add(SimVehicle v) {
@@ -321,6 +331,16 @@ public final class TeamSimulation {
         return network;
     }
 
+    /** The adversary on the channel, if the simulation has one. */
+    public java.util.Optional<Adversary> adversary() {
+        return java.util.Optional.ofNullable(adversary);
+    }
+
+    /** The ideal authentication of {@link Security#IDEAL} runs, with what it refused. */
+    public IdealAuthentication idealAuthentication() {
+        return ideal;
+    }
+
     public TeamInvariants invariants() {
         return invariants;
     }
@@ -401,6 +421,7 @@ public final class TeamSimulation {
         private Consumer<CellEvent> listener = e -> { };
         private Function<String, TaskProvider> tasks = id -> TaskProvider.NONE;
         private net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
+        private boolean adversary;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -461,9 +482,21 @@ public final class TeamSimulation {
             return this;
         }
 
+        /**
+         * Puts an {@link Adversary} on the channel: it replays, re-orders, bit-flips and forges
+         * datagrams from the start to the end of the run. It needs authentication (IDEAL or REAL).
+         */
+        public Builder adversary(boolean on) {
+            this.adversary = on;
+            return this;
+        }
+
         public TeamSimulation build() {
             if (vehicles.isEmpty()) {
                 throw new IllegalStateException("a simulation needs vehicles");
+            }
+            if (adversary && security == Security.NONE) {
+                throw new IllegalStateException("an adversary needs authentication to be kept out; security is NONE");
             }
             return new TeamSimulation(this);
         }
