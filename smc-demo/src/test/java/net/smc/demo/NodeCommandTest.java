@@ -291,7 +291,7 @@ class NodeCommandTest {
     private static String replySource(String at) throws IOException {
         try (DatagramSocket socket = new DatagramSocket()) {
             socket.setSoTimeout(2_000);
-            byte[] query = StatusResponder.query();
+            byte[] query = StatusResponder.query(net.smc.core.transport.Address.of(address(at)));
             socket.send(new DatagramPacket(query, query.length, address(at)));
             DatagramPacket reply = new DatagramPacket(new byte[2048], 2048);
             socket.receive(reply);

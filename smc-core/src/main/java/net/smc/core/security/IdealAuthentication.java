@@ -1,5 +1,6 @@
 package net.smc.core.security;
 
+import java.nio.ByteBuffer;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
@@ -20,10 +21,29 @@ import net.smc.core.transport.Transport;
  * mission) is never vouched for: what it sends is dropped and counted, exactly as
  * {@link SecureTransport} drops what fails its checks.
  *
- * <p>This models an ideal {@link SecureTransport}: same delivery rule (only authenticated payloads,
- * with their proven sender), none of its cost (about 1 ms per Ed25519 signature or verification),
- * which lets thousands of simulated team runs fit in a test run. The real one is exercised by its own
- * tests and by simulation runs that use it.
+ * <p>An adversary can still put anything on the in-memory network ({@code InMemoryNetwork.inject}),
+ * with any source address. So that it gains exactly what it would against {@link SecureTransport},
+ * every datagram carries a small seal that stands for the real envelope:
+ * {@code counter:8 | payload | tag:8}. The counter follows the sender's clock as the real one does
+ * ({@code max(last + 1, now << 20)}, kept across restarts); the tag is a keyed 64-bit hash, under a
+ * key only this object holds, of the sender's address, the destination (the receiver's address and
+ * incarnation for a unicast, as a pair session binds both ends; nothing for a broadcast, as a
+ * signature binds no receiver), the counter and the payload. A receiver refuses, and counts:
+ * <ul>
+ *   <li>what comes from an address with no accepted credential ({@link #dropped()});</li>
+ *   <li>a seal whose tag does not match: forged, bit-flipped, sent from another address, or a
+ *       unicast meant for an earlier incarnation of the receiver ({@link #tampered()});</li>
+ *   <li>a counter whose time lies more than the freshness window (30 s) from the receiver's clock,
+ *       or that it accepted before from that sender, by the real {@link ReplayWindow} of 64
+ *       counters ({@link #replayed()}).</li>
+ * </ul>
+ * What it does not model: the handshake's datagrams and their cost, and the cryptography itself
+ * (the tag is not a MAC against an adversary that reads this object; the simulated one does not).
+ *
+ * <p>So this is an ideal {@link SecureTransport}: same delivery rule (only authenticated, fresh,
+ * unrepeated payloads, with their proven sender), none of its cost (about 1 ms per Ed25519 signature
+ * or verification), which lets thousands of simulated team runs fit in a test run. The real one is
+ * exercised by its own tests and by simulation runs that use it.
  *
  * <p>One instance serves one simulated network; all calls on the simulation's thread.
  */
@@ -32,11 +52,23 @@ public final class IdealAuthentication {
     private final Clock clock;
     private final Map<Address, Credential> vouched = new HashMap<>();
     private final Map<String, Credential> byVehicle = new HashMap<>();
+    private final Map<Address, Long> counters = new HashMap<>();
+    private final Map<Address, Integer> incarnations = new HashMap<>();
+    private final long key;
     private long dropped;
+    private long tampered;
+    private long replayed;
 
+    /** An instance whose tags are keyed by a fixed key (the simulated adversary never reads it). */
     public IdealAuthentication(TrustAnchor trust, Clock clock) {
+        this(trust, clock, 0x5DEECE66DL);
+    }
+
+    /** @param key the key of the seals' tags */
+    public IdealAuthentication(TrustAnchor trust, Clock clock, long key) {
         this.trust = Objects.requireNonNull(trust, "trust");
         this.clock = Objects.requireNonNull(clock, "clock");
+        this.key = key;
     }
 
     /**
@@ -55,7 +87,8 @@ public final class IdealAuthentication {
         } else {
             vouched.remove(inner.localAddress());
         }
-        return new Endpoint(inner, status);
+        incarnations.merge(inner.localAddress(), 1, Integer::sum);
+        return new Endpoint(inner, status, incarnations.get(inner.localAddress()));
     }
 
     /** Payloads dropped because their sender was not vouched for. */
@@ -63,15 +96,74 @@ public final class IdealAuthentication {
         return dropped;
     }
 
+    /** Datagrams refused because their seal's tag did not match (forged, altered, re-addressed). */
+    public long tampered() {
+        return tampered;
+    }
+
+    /** Datagrams refused as repeats or as stale (counter outside the freshness window). */
+    public long replayed() {
+        return replayed;
+    }
+
+    private byte[] seal(Address from, Address to, int toIncarnation, byte[] payload) {
+        long counter = Math.max(counters.getOrDefault(from, Long.MIN_VALUE) + 1, clock.nowMillis() << 20);
+        counters.put(from, counter);
+        ByteBuffer out = ByteBuffer.allocate(payload.length + SEAL_BYTES);
+        out.putLong(counter).put(payload).putLong(tag(from, to, toIncarnation, counter, payload, 0, payload.length));
+        return out.array();
+    }
+
+    /** FNV-1a over the sealed fields, started from and finished with the key (a 64-bit mix). */
+    private long tag(Address from, Address to, int toIncarnation, long counter, byte[] data, int offset, int length) {
+        long h = key ^ 0xcbf29ce484222325L;
+        h = mix(h, from.hashCode());
+        h = mix(h, to == null ? 0 : to.hashCode());
+        h = mix(h, toIncarnation);
+        h = mix(h, counter);
+        for (int i = offset; i < offset + length; i++) {
+            h = (h ^ (data[i] & 0xff)) * 0x100000001b3L;
+        }
+        h ^= length;
+        h = (h ^ (h >>> 33)) * 0xff51afd7ed558ccdL;
+        h = (h ^ (h >>> 33)) * 0xc4ceb9fe1a85ec53L ^ key;
+        return h ^ (h >>> 33);
+    }
+
+    private static long mix(long h, long value) {
+        for (int i = 0; i < 8; i++) {
+            h = (h ^ ((value >>> (8 * i)) & 0xff)) * 0x100000001b3L;
+        }
+        return h;
+    }
+
+    /** Counter and tag, 8 bytes each. */
+    static final int SEAL_BYTES = 16;
+    private static final long FRESHNESS_MILLIS = SecuritySettings.DEFAULTS.freshnessWindowMillis();
+    private static final int REPLAY_WINDOW = SecuritySettings.DEFAULTS.replayWindow();
+
     /** One vehicle's endpoint: delivers only what vouched-for vehicles sent. */
     public final class Endpoint extends ForwardingTransport implements AuthenticatingTransport {
         private final CredentialStatus status;
+        private final int incarnation;
+        private final Map<Address, ReplayWindow> windows = new HashMap<>();
         private AuthenticatedReceiver receiver;
 
-        private Endpoint(Transport inner, CredentialStatus status) {
+        private Endpoint(Transport inner, CredentialStatus status, int incarnation) {
             super(inner);
             this.status = status;
+            this.incarnation = incarnation;
             inner.setReceiver(this::onDatagram);
+        }
+
+        @Override
+        public void send(Address to, byte[] data) {
+            inner.send(to, seal(localAddress(), to, incarnations.getOrDefault(to, 0), data));
+        }
+
+        @Override
+        public void broadcast(byte[] data) {
+            inner.broadcast(seal(localAddress(), null, 0, data));
         }
 
         /** What the check of this endpoint's own credential found. */
@@ -104,7 +196,29 @@ public final class IdealAuthentication {
                 dropped++;
                 return;
             }
-            receiver.onMessage(sender.vehicleId(), from, Protection.PAIR_MAC, data);
+            if (data.length < SEAL_BYTES) {
+                tampered++;
+                return;
+            }
+            ByteBuffer in = ByteBuffer.wrap(data);
+            long counter = in.getLong(0);
+            long tag = in.getLong(data.length - 8);
+            int length = data.length - SEAL_BYTES;
+            if (tag != tag(from, localAddress(), incarnation, counter, data, 8, length)
+                    && tag != tag(from, null, 0, counter, data, 8, length)) {
+                tampered++;
+                return;
+            }
+            ReplayWindow window = windows.computeIfAbsent(from, a -> new ReplayWindow(REPLAY_WINDOW));
+            long sentMillis = counter >> 20;
+            if (Math.abs(clock.nowMillis() - sentMillis) > FRESHNESS_MILLIS || !window.isFresh(counter)) {
+                replayed++;
+                return;
+            }
+            window.mark(counter, sentMillis);
+            byte[] payload = new byte[length];
+            System.arraycopy(data, 8, payload, 0, length);
+            receiver.onMessage(sender.vehicleId(), from, Protection.PAIR_MAC, payload);
         }
     }
 }

@@ -14,7 +14,7 @@ import net.smc.policy.api.PolicyRepository;
 /**
  * One seeded run of a reconnaissance team under faults: the seed picks the team (4 to 13
  * vehicles, sometimes a rogue), the scheme, the links (loss up to 30%, duplication, re-ordering,
- * delay within the protocols' latency assumption) and a schedule of faults (crashes and restarts,
+ * delay within the protocols' latency assumption), on every tenth seed an {@link Adversary}, and a schedule of faults (crashes and restarts,
  * partitions and heals, leaves and re-joins, new vehicles, link changes). After the faults stop,
  * the team must settle within {@link #settleBoundMillis}.
  *
@@ -30,6 +30,7 @@ public final class FaultSchedule {
     private final long faultMillis;
     private Consumer<String> log = line -> { };
     private Consumer<CellEvent> events = e -> { };
+    private boolean adversary;
 
     /**
      * @param distributed the reconnaissance mission, distributed scheme
@@ -42,6 +43,13 @@ public final class FaultSchedule {
         this.repository = repository;
         this.seed = seed;
         this.faultMillis = faultMillis;
+        this.adversary = hasAdversary(seed);
+    }
+
+    /** Puts an {@link Adversary} on the channel, or takes it off (by default: {@link #hasAdversary}). */
+    public FaultSchedule adversary(boolean on) {
+        this.adversary = on;
+        return this;
     }
 
     /** Receives a line per fault applied. */
@@ -67,6 +75,15 @@ public final class FaultSchedule {
         return 3 * t.orphanMillis() + 40 * t.comTimeoutMillis();
     }
 
+    /**
+     * Whether the run of {@code seed} has an {@link Adversary} on the channel: every tenth seed (so
+     * the sweep's cost barely grows). Its datagrams are drawn from its own random source, so a run's
+     * faults and links are those of the same seed without it.
+     */
+    public static boolean hasAdversary(long seed) {
+        return seed % 10 == 0;
+    }
+
     /** What the run did, for reports. */
     /**
      * @param matchesPlan whether the settled team is exactly what the planner gives (see
@@ -89,7 +106,7 @@ public final class FaultSchedule {
             team.add(SimVehicle.command("rcdr").asCommander().asRogue());
         }
         TeamSimulation sim = TeamSimulation.builder(mission, repository, seed).vehicles(team).link(link(random))
-                .listener(events).build();
+                .listener(events).adversary(adversary).build();
         sim.start();
         List<String> honest = team.stream().filter(v -> !v.rogue()).map(SimVehicle::id).toList();
         List<String> crashed = new ArrayList<>();

@@ -100,6 +100,7 @@ public final class TeamSimulation {
     private final net.smc.policy.api.AuthMode auth;
     private final TeamInvariants invariants;
     private final List<Set<String>> partition = new ArrayList<>();
+    private final Adversary adversary;
     private final WorldTeam world;
     private final BiConsumer<String, String> output;
     private int nextPort = 5000;
@@ -141,6 +142,8 @@ public final class TeamSimulation {
         for (SimVehicle v : b.vehicles) {
             add(v);
         }
+        this.adversary = b.adversary ? new Adversary(network, sim, seed,
+                nodes.values().stream().map(n -> n.address).toList()) : null;
         if (world != null) {
             world.checkPlaces(nodes.keySet());
         }
@@ -150,8 +153,11 @@ public final class TeamSimulation {
         return new Builder(mission, repository, seed);
     }
 
-    /** Starts every vehicle's cell. */
+    /** Starts every vehicle's cell, and the adversary if there is one. */
     public void start() {
+        if (adversary != null) {
+            adversary.start();
+        }
         if (world != null) {
             world.start();
         }
@@ -164,7 +170,11 @@ public final class TeamSimulation {
 
     /** Adds a vehicle and starts it now. */
     public void join(SimVehicle vehicle) {
-        boot(add(vehicle), vehicle.commander());
+        Node n = add(vehicle);
+        if (adversary != null) {
+            adversary.target(n.address);
+        }
+        boot(n, vehicle.commander());
     }
 
     private Node add(SimVehicle v) {
@@ -382,6 +392,16 @@ public final class TeamSimulation {
         return network;
     }
 
+    /** The adversary on the channel, if the simulation has one. */
+    public java.util.Optional<Adversary> adversary() {
+        return java.util.Optional.ofNullable(adversary);
+    }
+
+    /** The ideal authentication of {@link Security#IDEAL} runs, with what it refused. */
+    public IdealAuthentication idealAuthentication() {
+        return ideal;
+    }
+
     public TeamInvariants invariants() {
         return invariants;
     }
@@ -467,6 +487,7 @@ public final class TeamSimulation {
         private final Map<String, String> places = new LinkedHashMap<>();
         private final Map<String, List<String>> standalone = new LinkedHashMap<>();
         private net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
+        private boolean adversary;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
             this.mission = Objects.requireNonNull(mission, "mission");
@@ -573,9 +594,21 @@ public final class TeamSimulation {
             return this;
         }
 
+        /**
+         * Puts an {@link Adversary} on the channel: it replays, re-orders, bit-flips and forges
+         * datagrams from the start to the end of the run. It needs authentication (IDEAL or REAL).
+         */
+        public Builder adversary(boolean on) {
+            this.adversary = on;
+            return this;
+        }
+
         public TeamSimulation build() {
             if (vehicles.isEmpty()) {
                 throw new IllegalStateException("a simulation needs vehicles");
+            }
+            if (adversary && security == Security.NONE) {
+                throw new IllegalStateException("an adversary needs authentication to be kept out; security is NONE");
             }
             if (arena == null && (!places.isEmpty() || !standalone.isEmpty())) {
                 throw new IllegalStateException("vehicles are placed, but the simulation has no world; call world(arena)");

@@ -47,7 +47,7 @@ public final class StatusClient {
         if (timeoutMillis < 1) {
             throw new IllegalArgumentException("timeout " + timeout + " is too short; it must be at least 1 ms");
         }
-        byte[] query = StatusResponder.query();
+        byte[] query = StatusResponder.query(Address.of(node));
         byte[] buffer = new byte[RECEIVE_BUFFER_BYTES];
         long deadline = System.nanoTime() + timeout.toNanos();
         int sent = 0;

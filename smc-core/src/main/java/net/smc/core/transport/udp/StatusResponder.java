@@ -29,20 +29,27 @@ import org.slf4j.LoggerFactory;
  *
  * <p>The exchange, one datagram each way:
  * <ul>
- *   <li>query: exactly {@link #QUERY_MAGIC} ({@code "SMC?STAT"}) followed by the version byte
- *       {@value #VERSION}, nothing else;</li>
+ *   <li>query, exactly {@link #QUERY_BYTES} bytes: {@link #QUERY_MAGIC} ({@code "SMC?STAT"}), the
+ *       version byte {@value #VERSION}, one length byte and the address of the node asked as ASCII
+ *       {@code host:port} (its unicast address), then zeros to the end;</li>
  *   <li>reply, sent to the query's {@code from} address: {@link #REPLY_MAGIC} ({@code "SMC!STAT"}), the
  *       version byte, then the cell's view as UTF-8 JSON, from the supplier given at construction.
  *       When the view does not fit in one datagram ({@link #MAX_JSON_BYTES}), the reply carries
  *       {@code {"error":"status view too large","bytes":N,"limit":L}} instead.</li>
  * </ul>
- * A datagram that starts with the 8-byte query magic but is not a valid query (another version,
- * bytes after the version) is dropped and counted as {@linkplain #malformed() malformed}; it is
+ * <p>Not an amplifier: a query is answered only by the node it names, so one sent to the team's
+ * broadcast port gets at most one reply, not one per node ({@linkplain #notForMe() counted} and dropped
+ * elsewhere); and a query is padded to {@value #QUERY_BYTES} bytes, so no reply (at most
+ * {@value net.smc.core.transport.Transport#MAX_DATAGRAM_BYTES} bytes) is more than
+ * {@value #MAX_AMPLIFICATION} times the query that asked for it.
+ *
+ * <p>A datagram that starts with the 8-byte query magic but is not a valid query (another version,
+ * another length, a bad address) is dropped and counted as {@linkplain #malformed() malformed}; it is
  * never a cell message, whose first three bytes are {@code "SM"} and version 1. Every other
  * datagram, including one shorter than the magic, goes unchanged to the receiver registered with
  * {@link #setReceiver}. Replies are limited to {@value #DEFAULT_REPLIES_PER_SECOND} in any second by
- * default, so a flood of queries cannot turn a cell into a traffic amplifier or keep its thread
- * busy rendering views; queries over the limit are dropped and counted as {@linkplain #refused() refused}.
+ * default, so a flood of queries cannot keep the cell's thread busy rendering views; queries over
+ * the limit are dropped and counted as {@linkplain #refused() refused}.
  *
  * <p><b>Security:</b> the query is read-only and unauthenticated. Anyone who can send a datagram to
  * the cell's unicast address gets the JSON view, and nothing else: a query changes no state and
@@ -61,10 +68,14 @@ public final class StatusResponder extends ForwardingTransport {
     public static final byte[] QUERY_MAGIC = "SMC?STAT".getBytes(US_ASCII);
     /** The first 8 bytes of a status reply: ASCII {@code SMC!STAT}. */
     public static final byte[] REPLY_MAGIC = "SMC!STAT".getBytes(US_ASCII);
-    /** The version byte after either magic. */
-    public static final byte VERSION = 1;
-    /** Magic plus version: the whole of a query, and the bytes before a reply's JSON. */
+    /** The version byte after either magic (2: queries name the node and are padded). */
+    public static final byte VERSION = 2;
+    /** Magic plus version: the bytes before a query's target and before a reply's JSON. */
     public static final int HEADER_BYTES = 9;
+    /** The length of every query: a reply is at most {@value #MAX_AMPLIFICATION} times it. */
+    public static final int QUERY_BYTES = 480;
+    /** The most a reply's size may be over its query's: {@code MAX_DATAGRAM_BYTES / QUERY_BYTES}, rounded up. */
+    public static final int MAX_AMPLIFICATION = 3;
     /** The most bytes of JSON one reply can carry. */
     public static final int MAX_JSON_BYTES = MAX_DATAGRAM_BYTES - HEADER_BYTES;
     /** Replies allowed in any 1,000 ms, unless the constructor says otherwise. */
@@ -87,6 +98,7 @@ public final class StatusResponder extends ForwardingTransport {
     private volatile long answered;
     private volatile long refused;
     private volatile long malformed;
+    private volatile long notForMe;
     private volatile long passedOn;
     private volatile long droppedNoReceiver;
 
@@ -144,11 +156,36 @@ public final class StatusResponder extends ForwardingTransport {
         return startsWith(datagram, datagram.length, QUERY_MAGIC);
     }
 
-    /** The query datagram a client sends: magic and version. */
-    public static byte[] query() {
-        byte[] query = Arrays.copyOf(QUERY_MAGIC, HEADER_BYTES);
+    /** The query datagram a client sends to the node at {@code target}: magic, version, target, padding. */
+    public static byte[] query(Address target) {
+        byte[] name = target.toString().getBytes(US_ASCII);
+        byte[] query = Arrays.copyOf(QUERY_MAGIC, QUERY_BYTES);
         query[QUERY_MAGIC.length] = VERSION;
+        query[HEADER_BYTES] = (byte) name.length;
+        System.arraycopy(name, 0, query, HEADER_BYTES + 1, name.length);
         return query;
+    }
+
+    /** The node a valid query names, or null when {@code datagram} is not a valid query. */
+    static Address queryTarget(byte[] datagram) {
+        if (datagram.length != QUERY_BYTES || !startsWith(datagram, datagram.length, QUERY_MAGIC)
+                || datagram[QUERY_MAGIC.length] != VERSION) {
+            return null;
+        }
+        int length = datagram[HEADER_BYTES] & 0xff;
+        if (length == 0 || HEADER_BYTES + 1 + length > QUERY_BYTES) {
+            return null;
+        }
+        for (int i = HEADER_BYTES + 1 + length; i < QUERY_BYTES; i++) {
+            if (datagram[i] != 0) {
+                return null;
+            }
+        }
+        try {
+            return Address.parse(new String(datagram, HEADER_BYTES + 1, length, US_ASCII));
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
     }
 
     /**
@@ -185,6 +222,11 @@ public final class StatusResponder extends ForwardingTransport {
         return malformed;
     }
 
+    /** Valid queries that named another node (as one sent to the broadcast port does); dropped. */
+    public long notForMe() {
+        return notForMe;
+    }
+
     /** Datagrams handed on to the receiver. */
     public long passedOn() {
         return passedOn;
@@ -198,10 +240,15 @@ public final class StatusResponder extends ForwardingTransport {
     private void onDatagram(Address from, byte[] data) {
         if (!startsWith(data, data.length, QUERY_MAGIC)) {
             passOn(from, data);
-        } else if (data.length != HEADER_BYTES || data[QUERY_MAGIC.length] != VERSION) {
+            return;
+        }
+        Address target = queryTarget(data);
+        if (target == null) {
             malformed++;
             LOG.debug("status query from {} refused as malformed: {} bytes, version byte {}", from, data.length,
                     data.length > QUERY_MAGIC.length ? data[QUERY_MAGIC.length] : "missing");
+        } else if (!target.equals(localAddress())) {
+            notForMe++;
         } else if (!takeReplySlot(from)) {
             refused++;
         } else {

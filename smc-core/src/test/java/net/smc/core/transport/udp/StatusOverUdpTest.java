@@ -43,9 +43,9 @@ class StatusOverUdpTest {
              DatagramSocket other = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
             Thread answerer = new Thread(() -> {
                 try {
-                    DatagramPacket q = new DatagramPacket(new byte[64], 64);
+                    DatagramPacket q = new DatagramPacket(new byte[1024], 1024);
                     node.receive(q);
-                    byte[] forged = "SMC!STAT\u0001{\"forged\":true}".getBytes(UTF_8);
+                    byte[] forged = "SMC!STAT\u0002{\"forged\":true}".getBytes(UTF_8);
                     other.send(new DatagramPacket(forged, forged.length, q.getSocketAddress()));   // not the node asked
                     node.send(new DatagramPacket(reply, reply.length, q.getSocketAddress()));
                 } catch (IOException e) {
@@ -63,12 +63,12 @@ class StatusOverUdpTest {
 
     @Test
     void theClientTakesAnAnswerOnlyFromTheAddressItAsked() throws Exception {
-        assertEquals("{\"id\":\"real\"}", askFake("SMC!STAT\u0001{\"id\":\"real\"}".getBytes(UTF_8)));
+        assertEquals("{\"id\":\"real\"}", askFake("SMC!STAT\u0002{\"id\":\"real\"}".getBytes(UTF_8)));
     }
 
     @Test
     void anAnswerThatIsNotValidJson_isAClearError() {
-        IOException e = assertThrows(IOException.class, () -> askFake("SMC!STAT\u0001{\"id\": oops".getBytes(UTF_8)));
+        IOException e = assertThrows(IOException.class, () -> askFake("SMC!STAT\u0002{\"id\": oops".getBytes(UTF_8)));
         assertTrue(e.getMessage().contains("is not valid JSON"), e.getMessage());
     }
 
@@ -112,11 +112,11 @@ class StatusOverUdpTest {
             assertEquals("no status reply from 127.0.0.1:" + node.getPort() + " within 300 ms (3 queries sent); "
                     + "is a node running there?", e.getMessage());
             assertTrue(tookMillis >= 290, "waited the whole timeout, took " + tookMillis + " ms");
-            byte[] buffer = new byte[64];
+            byte[] buffer = new byte[1024];
             DatagramPacket packet = new DatagramPacket(buffer, buffer.length);
             silent.setSoTimeout(1_000);
             silent.receive(packet);
-            assertEquals(9, packet.getLength(), "the node was sent a query");
+            assertEquals(StatusResponder.QUERY_BYTES, packet.getLength(), "the node was sent a query");
         }
     }
 
@@ -136,11 +136,11 @@ class StatusOverUdpTest {
     /** Answers the first query with a datagram that is not a reply, then with a reply. */
     private static void answerAfterNoise(DatagramSocket node) {
         try {
-            DatagramPacket query = new DatagramPacket(new byte[64], 64);
+            DatagramPacket query = new DatagramPacket(new byte[1024], 1024);
             node.receive(query);
-            byte[] noise = "SMC!STAT\u0002{\"old\":true}".getBytes(UTF_8);
+            byte[] noise = "SMC!STAT\u0001{\"old\":true}".getBytes(UTF_8);
             node.send(new DatagramPacket(noise, noise.length, query.getSocketAddress()));
-            byte[] reply = "SMC!STAT\u0001{\"ok\":true}".getBytes(UTF_8);
+            byte[] reply = "SMC!STAT\u0002{\"ok\":true}".getBytes(UTF_8);
             node.send(new DatagramPacket(reply, reply.length, query.getSocketAddress()));
         } catch (IOException e) {
             throw new UncheckedIOException(e);

@@ -57,6 +57,11 @@ class StatusResponderTest {
         return askerGot.stream().map(d -> StatusResponder.replyJson(d, d.length)).toList();
     }
 
+    /** A query naming the cell. */
+    private byte[] query() {
+        return StatusResponder.query(cellSide.localAddress());
+    }
+
     private static byte[] bytes(String ascii) {
         return ascii.getBytes(US_ASCII);
     }
@@ -65,19 +70,69 @@ class StatusResponderTest {
     void query_isAnsweredToItsSender_withTheView() {
         StatusResponder responder = responder();
 
-        ask(StatusResponder.query());
+        ask(query());
 
         assertEquals(List.of(VIEW), repliesAsJson());
         assertEquals("SMC!STAT", new String(askerGot.get(0), 0, 8, US_ASCII));
-        assertEquals(1, askerGot.get(0)[8]);
+        assertEquals(2, askerGot.get(0)[8]);
         assertEquals(List.of(), cellGot, "a query never reaches the cell");
         assertEquals(1, responder.answered());
         assertEquals(0, responder.passedOn());
     }
 
     @Test
-    void query_isNineBytes_magicThenVersion() {
-        assertArrayEquals(bytes("SMC?STAT\u0001"), StatusResponder.query());
+    void query_isMagicVersionAndTarget_paddedWithZeros() {
+        byte[] query = query();
+        String target = "127.0.0.1:4001";
+        assertEquals(StatusResponder.QUERY_BYTES, query.length);
+        assertArrayEquals(bytes("SMC?STAT\u0002\u000e" + target), Arrays.copyOf(query, 10 + target.length()));
+        for (int i = 10 + target.length(); i < query.length; i++) {
+            assertEquals(0, query[i], "padding byte " + i);
+        }
+    }
+
+    @Test
+    void queryBroadcastToTheTeam_isAnsweredByNoNode() {
+        StatusResponder responder = responder();
+        Transport other = network.attach(Address.loopback(4003));
+        StatusResponder otherResponder = new StatusResponder(other, () -> VIEW, scheduler, 20);
+        otherResponder.setReceiver((from, data) -> { });
+
+        asker.broadcast(StatusResponder.query(Address.of("127.255.255.255", 47474)));
+        scheduler.runUntilIdle(10_000);
+
+        assertEquals(List.of(), askerGot);
+        assertEquals(1, responder.notForMe());
+        assertEquals(1, otherResponder.notForMe());
+        assertEquals(List.of(), cellGot, "nor is it passed on");
+    }
+
+    @Test
+    void queryNamingOneNode_isAnsweredByThatNodeOnly_evenWhenBroadcast() {
+        StatusResponder responder = responder();
+        Transport other = network.attach(Address.loopback(4003));
+        StatusResponder otherResponder = new StatusResponder(other, () -> "{\"id\":\"other\"}", scheduler, 20);
+        otherResponder.setReceiver((from, data) -> { });
+
+        asker.broadcast(query());
+        scheduler.runUntilIdle(10_000);
+
+        assertEquals(List.of(VIEW), repliesAsJson());
+        assertEquals(1, responder.answered());
+        assertEquals(0, otherResponder.answered());
+    }
+
+    @Test
+    void reply_isAtMostThreeTimesTheQuery_evenForTheLargestView() {
+        String largest = "\"" + "z".repeat(StatusResponder.MAX_JSON_BYTES - 2) + "\"";
+        responder(() -> largest, 20);
+
+        byte[] query = query();
+        ask(query);
+
+        assertEquals(Transport.MAX_DATAGRAM_BYTES, askerGot.get(0).length);
+        assertTrue(askerGot.get(0).length <= StatusResponder.MAX_AMPLIFICATION * query.length,
+                askerGot.get(0).length + " bytes answer " + query.length);
     }
 
     @Test
@@ -85,8 +140,8 @@ class StatusResponderTest {
         AtomicInteger calls = new AtomicInteger();
         responder(() -> "{\"n\":" + calls.incrementAndGet() + "}", 20);
 
-        ask(StatusResponder.query());
-        ask(StatusResponder.query());
+        ask(query());
+        ask(query());
 
         assertEquals(List.of("{\"n\":1}", "{\"n\":2}"), repliesAsJson());
     }
@@ -137,14 +192,24 @@ class StatusResponderTest {
     void magicWithAnotherVersionOrMoreBytes_isCountedAsMalformed_notAnsweredNorPassedOn() {
         StatusResponder responder = responder();
 
+        byte[] unpadded = Arrays.copyOf(query(), 24);
+        byte[] tail = query();
+        tail[tail.length - 1] = 1;
+        byte[] badTarget = query();
+        badTarget[10] = 'x';
+        byte[] overlong = query();
+        overlong[9] = (byte) 255;
         ask(bytes("SMC?STAT"));                      // no version byte
-        ask(bytes("SMC?STAT\u0002"));                // a version this side does not speak
-        ask(bytes("SMC?STAT\u0001{\"x\":1}"));      // bytes after the version
-        ask(bytes("SMC!STAT\u0001{}"));              // a reply sent to a cell is an ordinary datagram
+        ask(bytes("SMC?STAT\u0001"));                // version 1: the unpadded query of old
+        ask(unpadded);                               // not padded to the query's size
+        ask(tail);                                   // padding that is not zeros
+        ask(badTarget);                              // no address
+        ask(overlong);                               // a target longer than the query
+        ask(bytes("SMC!STAT\u0002{}"));              // a reply sent to a cell is an ordinary datagram
 
-        assertEquals(3, responder.malformed());
+        assertEquals(6, responder.malformed());
         assertEquals(0, responder.answered());
-        assertEquals(List.of("127.0.0.1:4002 SMC!STAT\u0001{}"), cellGot);
+        assertEquals(List.of("127.0.0.1:4002 SMC!STAT\u0002{}"), cellGot);
         assertEquals(List.of(), askerGot);
     }
 
@@ -154,11 +219,11 @@ class StatusResponderTest {
         Transport flooder = network.attach(Address.loopback(4666));
         List<byte[]> realAnswers = new ArrayList<>();
         for (int ms = 0; ms < 1_000; ms++) {   // 1,000 queries a second from one source
-            flooder.send(cellSide.localAddress(), StatusResponder.query());
+            flooder.send(cellSide.localAddress(), query());
             if (ms % 100 == 50) {   // 10 real queries, from 10 tools
                 Transport tool = network.attach(Address.loopback(5000 + ms));
                 tool.setReceiver((from, data) -> realAnswers.add(data));
-                tool.send(cellSide.localAddress(), StatusResponder.query());
+                tool.send(cellSide.localAddress(), query());
             }
             scheduler.runUntil(scheduler.nowMillis() + 1);
         }
@@ -172,7 +237,7 @@ class StatusResponderTest {
         StatusResponder responder = responder(() -> VIEW, 3);
 
         for (int i = 0; i < 5; i++) {
-            asker.send(cellSide.localAddress(), StatusResponder.query());
+            asker.send(cellSide.localAddress(), query());
         }
         scheduler.runUntilIdle(10_000);
         assertEquals(3, responder.answered());
@@ -180,10 +245,10 @@ class StatusResponderTest {
 
         // The first reply's slot was taken when its query landed at 1 ms; each ask lands 1 ms after it is sent.
         scheduler.runUntil(999);
-        ask(StatusResponder.query());          // lands at 1,000 ms: 999 ms after the first
+        ask(query());          // lands at 1,000 ms: 999 ms after the first
         assertEquals(3, responder.refused());
 
-        ask(StatusResponder.query());          // lands at 1,001 ms: a second after the first
+        ask(query());          // lands at 1,001 ms: a second after the first
         assertEquals(4, responder.answered());
         assertEquals(4, askerGot.size());
     }
@@ -192,12 +257,12 @@ class StatusResponderTest {
     void rateLimit_isASlidingSecond_notAFixedWindow() {
         StatusResponder responder = responder(() -> VIEW, 2);
 
-        ask(StatusResponder.query());          // lands at 1 ms
+        ask(query());          // lands at 1 ms
         scheduler.runUntil(602);
-        ask(StatusResponder.query());          // lands at 603 ms
+        ask(query());          // lands at 603 ms
         scheduler.runUntil(1_100);
-        ask(StatusResponder.query());          // lands at 1,101 ms: the reply at 1 ms is over a second old
-        ask(StatusResponder.query());          // lands at 1,103 ms: the reply at 603 ms is not
+        ask(query());          // lands at 1,101 ms: the reply at 1 ms is over a second old
+        ask(query());          // lands at 1,103 ms: the reply at 603 ms is not
 
         assertEquals(3, responder.answered());
         assertEquals(1, responder.refused());
@@ -208,7 +273,7 @@ class StatusResponderTest {
         String big = "{\"pad\":\"" + "x".repeat(2_000) + "\"}";
         StatusResponder responder = responder(() -> big, 20);
 
-        ask(StatusResponder.query());
+        ask(query());
 
         assertEquals(List.of("{\"error\":\"status view too large\",\"bytes\":2010,\"limit\":1391}"), repliesAsJson());
         assertEquals(1, responder.answered());
@@ -219,7 +284,7 @@ class StatusResponderTest {
         String exact = "\"" + "y".repeat(StatusResponder.MAX_JSON_BYTES - 2) + "\"";
         responder(() -> exact, 20);
 
-        ask(StatusResponder.query());
+        ask(query());
 
         assertEquals(List.of(exact), repliesAsJson());
         assertEquals(Transport.MAX_DATAGRAM_BYTES, askerGot.get(0).length);
@@ -231,7 +296,7 @@ class StatusResponderTest {
             throw new IllegalStateException("not started");
         }, 20);
 
-        ask(StatusResponder.query());
+        ask(query());
 
         assertEquals(List.of("{\"error\":\"status view failed\",\"exception\":\"java.lang.IllegalStateException\"}"),
                 repliesAsJson());
@@ -242,7 +307,7 @@ class StatusResponderTest {
         StatusResponder responder = new StatusResponder(cellSide, () -> VIEW, scheduler, 20);
 
         ask(bytes("early"));
-        ask(StatusResponder.query());
+        ask(query());
 
         assertEquals(1, responder.droppedNoReceiver());
         assertEquals(List.of(VIEW), repliesAsJson());
@@ -290,10 +355,10 @@ class StatusResponderTest {
 
     @Test
     void replyJson_ofAnythingButAReply_isNull() {
-        assertNull(StatusResponder.replyJson(StatusResponder.query(), 9));
+        assertNull(StatusResponder.replyJson(query(), 9));
         assertNull(StatusResponder.replyJson(bytes("SMC!STAT"), 8));
-        assertNull(StatusResponder.replyJson(bytes("SMC!STAT\u0002{}"), 11));
-        assertEquals("{}", StatusResponder.replyJson(bytes("SMC!STAT\u0001{}xx"), 11), "only the given length counts");
-        assertTrue(StatusResponder.replyJson(bytes("SMC!STAT\u0001"), 9).isEmpty());
+        assertNull(StatusResponder.replyJson(bytes("SMC!STAT\u0001{}"), 11));
+        assertEquals("{}", StatusResponder.replyJson(bytes("SMC!STAT\u0002{}xx"), 11), "only the given length counts");
+        assertTrue(StatusResponder.replyJson(bytes("SMC!STAT\u0002"), 9).isEmpty());
     }
 }

@@ -1,0 +1,122 @@
+package net.smc.core.security;
+
+import static net.smc.core.security.Team.T0;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+
+import net.smc.core.transport.Address;
+import net.smc.core.transport.sim.InMemoryNetwork;
+import net.smc.core.transport.sim.NetworkObserver;
+import net.smc.core.transport.sim.SimulationScheduler;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The ideal model refuses what the real {@link SecureTransport} refuses, against an adversary that
+ * can put any bytes on the in-memory network under any source address.
+ */
+class IdealAuthenticationTest {
+    private final Team team = new Team(3);
+    private final SimulationScheduler scheduler = new SimulationScheduler(T0);
+    private final InMemoryNetwork network = new InMemoryNetwork(scheduler, 5);
+    private final IdealAuthentication ideal = new IdealAuthentication(team.trust, scheduler);
+    private final Address a = Address.loopback(4001);
+    private final Address b = Address.loopback(4002);
+    private final List<String> heardByB = new ArrayList<>();
+    private final List<byte[]> onAir = new ArrayList<>();
+    private IdealAuthentication.Endpoint endpointA;
+
+    IdealAuthenticationTest() {
+        endpointA = ideal.wrap(network.attach(a), team.identity("uav-a").credential());
+        IdealAuthentication.Endpoint endpointB = ideal.wrap(network.attach(b), team.identity("uav-b").credential());
+        endpointB.setAuthenticatedReceiver((sender, from, protection, payload) ->
+                heardByB.add(sender + ":" + new String(payload, StandardCharsets.UTF_8)));
+        endpointA.setReceiver((from, data) -> { });
+        network.addObserver(new NetworkObserver() {
+            @Override
+            public void delivered(long atMillis, Address from, Address to, byte[] data) {
+                onAir.add(data.clone());
+            }
+        });
+    }
+
+    private void sendAndDeliver(String text) {
+        endpointA.send(b, text.getBytes(StandardCharsets.UTF_8));
+        scheduler.runFor(100);
+    }
+
+    @Test
+    void authenticTraffic_isDeliveredWithItsSender() {
+        sendAndDeliver("hello");
+        endpointA.broadcast("all".getBytes(StandardCharsets.UTF_8));
+        scheduler.runFor(100);
+        assertEquals(List.of("uav-a:hello", "uav-a:all"), heardByB);
+    }
+
+    @Test
+    void aReplay_isRefused_atOnceAndLater() {
+        sendAndDeliver("assign");
+        network.inject(a, b, onAir.get(0), 0);
+        network.inject(a, b, onAir.get(0), 10_000);
+        scheduler.runFor(11_000);
+        assertEquals(List.of("uav-a:assign"), heardByB);
+        assertEquals(2, ideal.replayed());
+    }
+
+    @Test
+    void reorderedTraffic_passes_butEachDatagramOnce() {
+        sendAndDeliver("one");
+        sendAndDeliver("two");
+        heardByB.clear();
+        onAir.clear();
+        endpointA.send(b, "three".getBytes(StandardCharsets.UTF_8));
+        endpointA.send(b, "four".getBytes(StandardCharsets.UTF_8));
+        scheduler.runFor(100);
+        network.inject(a, b, onAir.get(1), 0);
+        network.inject(a, b, onAir.get(0), 1);
+        scheduler.runFor(100);
+        assertEquals(List.of("uav-a:three", "uav-a:four"), heardByB);
+    }
+
+    @Test
+    void aFlippedBit_isRefused() {
+        sendAndDeliver("role");
+        for (int bit = 0; bit < onAir.get(0).length * 8; bit++) {
+            byte[] flipped = onAir.get(0).clone();
+            flipped[bit / 8] ^= (byte) (1 << (bit % 8));
+            network.inject(a, b, flipped, 0);
+        }
+        scheduler.runFor(100);
+        assertEquals(List.of("uav-a:role"), heardByB);
+        assertEquals(onAir.get(0).length * 8, ideal.tampered() + ideal.replayed());
+    }
+
+    @Test
+    void aStaleDatagram_isRefused_evenByAReceiverThatForgotItsCounters() {
+        sendAndDeliver("old");
+        byte[] old = onAir.get(0);
+        network.crash(b);
+        IdealAuthentication.Endpoint restarted = ideal.wrap(network.restart(b), team.identity("uav-b").credential());
+        List<String> heard = new ArrayList<>();
+        restarted.setAuthenticatedReceiver((sender, from, protection, payload) -> heard.add(sender));
+        network.inject(a, b, old, 0);
+        network.inject(a, b, old, 31_000);
+        scheduler.runFor(32_000);
+        assertEquals(List.of(), heard, "a unicast to the earlier incarnation, at once and after 31 s");
+    }
+
+    @Test
+    void aDatagramUnderAnotherSourceAddress_orForged_isRefused() {
+        Address c = Address.loopback(4003);
+        ideal.wrap(network.attach(c), team.identity("uav-c").credential());
+        sendAndDeliver("mine");
+        network.inject(c, b, onAir.get(0), 0);
+        network.inject(a, b, new byte[40], 0);
+        network.inject(a, b, new byte[3], 0);
+        scheduler.runFor(100);
+        assertEquals(List.of("uav-a:mine"), heardByB);
+        assertEquals(3, ideal.tampered());
+    }
+}

@@ -1,0 +1,58 @@
+package net.smc.sim.team;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import net.smc.core.cell.Missions;
+import net.smc.core.security.IdealAuthentication;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A team forms with an {@link Adversary} on the channel replaying, re-ordering, bit-flipping and
+ * forging datagrams all along: every honest vehicle joins, and the ideal authentication refused
+ * each kind of attack.
+ */
+class AdversaryTeamTest {
+
+    @Test
+    void aTeamForms_andStaysWhole_underReplaysFlipsAndForgeries() {
+        TeamSimulation sim = TeamSimulation.builder(Missions.reconnaissance(), Missions.REPOSITORY, 11)
+                .vehicles(SimVehicle.reconnaissance(2, 1, 2, 2)).adversary(true).build();
+        sim.start();
+        try {
+            assertTrue(sim.runUntil(() -> sim.invariants().settled(), 30_000), () -> sim.invariants().unsettled());
+            sim.crash("s1");
+            sim.run(2_000);
+            sim.restart("s1");
+            assertTrue(sim.runUntil(() -> sim.invariants().settled(), 30_000), () -> sim.invariants().unsettled());
+            sim.run(20_000);
+            assertTrue(sim.invariants().settled(), () -> sim.invariants().unsettled());
+        } catch (InvariantViolation v) {
+            throw new AssertionError(v.report(), v);
+        }
+        IdealAuthentication auth = sim.idealAuthentication();
+        long sent = sim.adversary().orElseThrow().sent();
+        assertTrue(sent > 500, "the adversary sent " + sent);
+        assertTrue(auth.replayed() > 100, "replays refused: " + auth.replayed());
+        assertTrue(auth.tampered() > 100, "tampered refused: " + auth.tampered());
+    }
+
+    /**
+     * Everything the adversary sends is refused, so a faulty run takes exactly the decisions it takes
+     * without it (the adversary draws from its own random source, not the network's).
+     */
+    @Test
+    void theAdversaryChangesNoDecision_ofAFaultyRun() {
+        assertEquals(trace(20, false), trace(20, true));
+    }
+
+    private static List<String> trace(long seed, boolean adversary) {
+        List<String> lines = new ArrayList<>();
+        new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, seed, 20_000)
+                .adversary(adversary).events(e -> lines.add(e.toString())).run();
+        return lines;
+    }
+}
