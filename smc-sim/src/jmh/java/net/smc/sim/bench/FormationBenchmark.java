@@ -13,6 +13,7 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Timeout;
 import org.openjdk.jmh.infra.BenchmarkParams;
 
 /**
@@ -25,12 +26,14 @@ import org.openjdk.jmh.infra.BenchmarkParams;
  * when the team did not form within 600 simulated seconds (means over the iterations; the
  * per-iteration lines show them divided by the number of iterations).
  *
- * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-wi 1 -i 3 FormationBenchmark -p vehicles=10,100,1000'</pre>
+ * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-wi 1 -i 3 FormationBenchmark -p vehicles=10,100,1000'
+ * ./gradlew :smc-sim:jmh -PjmhArgs='-wi 0 -i 1 FormationBenchmark -p vehicles=10000'</pre>
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SingleShotTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
-@Fork(value = 1, jvmArgsAppend = {"-Xmx3g", "-Xss8m"})
+@Fork(value = 1, jvmArgsAppend = {"-Xmx8g", "-Xss8m"})
+@Timeout(time = 60, timeUnit = TimeUnit.MINUTES)   // 10,000 vehicles take minutes on a shared 2-core machine
 public class FormationBenchmark {
     @Param({"10", "100", "1000", "10000"})
     public int vehicles;

@@ -78,6 +78,19 @@ final class ScaledTeam {
         return sim.runUntil(this::formed, FORMATION_LIMIT_MILLIS);
     }
 
+    /**
+     * As {@link #form()}, telling {@code progress} after every {@code everyMillis} of simulated time
+     * how many seats are accepted.
+     */
+    boolean form(long everyMillis, java.util.function.IntConsumer progress) {
+        sim.start();
+        while (!formed() && sim.nowMillis() < FORMATION_LIMIT_MILLIS) {
+            sim.runUntil(this::formed, everyMillis);
+            progress.accept(accepted.size());
+        }
+        return formed();
+    }
+
     boolean formed() {
         return accepted.size() >= size - 1;
     }
