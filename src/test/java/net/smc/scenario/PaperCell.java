@@ -10,13 +10,13 @@ import java.util.Set;
 import java.util.TreeSet;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.discovery.CredentialCheck;
-import net.smc.core.discovery.Discovery;
+import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**
@@ -36,14 +36,14 @@ final class PaperCell {
     final List<Diagnostic> errors = new ArrayList<>();
     final List<String> capabilityRequests = new ArrayList<>();
     final List<String> reassignments = new ArrayList<>();
-    final Cell cell;
+    final PolicyEngine cell;
     final RoleManager roles;
 
     PaperCell() {
-        cell = Cell.builder().repository(REPOSITORY).auth(AuthMode.DENY).output(out::add).errors(errors::add).build();
+        cell = PolicyEngine.builder().repository(REPOSITORY).auth(AuthMode.DENY).output(out::add).errors(errors::add).build();
         RunResult boot = cell.load("policy:/boot/events");
         assertTrue(boot.ok() && boot.diagnostics().isEmpty(), () -> "boot events: " + boot.diagnostics());
-        new Discovery(CredentialCheck.sharedToken(TOKEN), (uav, role) -> capabilityRequests.add(uav + " for " + role))
+        new DiscoveryObject(CredentialCheck.sharedToken(TOKEN), (uav, role) -> capabilityRequests.add(uav + " for " + role))
                 .install(cell);
         cell.endBoot();
         roles = RoleManager.builder(cell)

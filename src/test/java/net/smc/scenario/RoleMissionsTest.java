@@ -10,7 +10,7 @@ import net.smc.core.role.ExternalCallException;
 import net.smc.core.role.ExternalGateway;
 import net.smc.core.role.ExternalInterface;
 import net.smc.core.role.Role;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
@@ -71,7 +71,7 @@ class RoleMissionsTest {
         gateway.raise(new Caller("c4", "hdetector"), "aggregator", "hazardDetected", "hazardDetected", "uav4", "gas", 3, 4);
 
         assertEquals(List.of("Hazard gas at 3,4 reported by uav4"), c.out);
-        assertEquals("[[gas, 3, 4, uav4]]", Cell.print(c.cell.resolve("root/role/aggregator/hazards")));
+        assertEquals("[[gas, 3, 4, uav4]]", PolicyEngine.print(c.cell.resolve("root/role/aggregator/hazards")));
     }
 
     @Test
@@ -83,7 +83,7 @@ class RoleMissionsTest {
 
         assertThrows(ExternalCallException.class, () -> gateway.raise(new Caller("c5", "relay"), "aggregator",
                 "hazardDetected", "hazardDetected", "uav5", "gas", 3, 4));
-        assertEquals("[]", Cell.print(c.cell.resolve("root/role/aggregator/hazards")));
+        assertEquals("[]", PolicyEngine.print(c.cell.resolve("root/role/aggregator/hazards")));
     }
 
     @Test
@@ -93,7 +93,7 @@ class RoleMissionsTest {
         c.cell.raise("/event/hazardDetected", "hazardDetected", "uav4", "radiation", 7, 1);
 
         assertEquals(List.of("Detector confirmed radiation at 7,1"), c.out);
-        assertEquals("[[radiation, 7, 1]]", Cell.print(c.cell.resolve("root/role/hdetector/found")));
+        assertEquals("[[radiation, 7, 1]]", PolicyEngine.print(c.cell.resolve("root/role/hdetector/found")));
     }
 
     @Test
@@ -105,7 +105,7 @@ class RoleMissionsTest {
         c.cell.raise("/event/linkQuality", "linkQuality", "uav2", 0.8);
 
         assertEquals(List.of("Weak link to uav2: 0.1", "Weak link to uav3: 0.2"), c.out);
-        assertEquals("{ uav3=\"0.2\" }", Cell.print(c.cell.resolve("root/role/relay/weakLinks")));
+        assertEquals("{ uav3=\"0.2\" }", PolicyEngine.print(c.cell.resolve("root/role/relay/weakLinks")));
     }
 
     @Test
@@ -117,7 +117,7 @@ class RoleMissionsTest {
         gateway.invoke(new Caller("c1", "surveyor"), "relay", "disable:", "noteWeakLink");
         c.cell.raise("/event/linkQuality", "linkQuality", "uav2", 0.1);
 
-        assertEquals("[noteWeakLink, forgetRecoveredLink]", Cell.print(policies));
+        assertEquals("[noteWeakLink, forgetRecoveredLink]", PolicyEngine.print(policies));
         assertEquals(List.of(), c.out);
         assertThrows(ExternalCallException.class,
                 () -> gateway.invoke(new Caller("c0", "commander"), "relay", "enable:", "noteWeakLink"));

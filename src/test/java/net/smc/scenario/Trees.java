@@ -4,7 +4,7 @@ import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.Map;
 import java.util.Set;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.ManagedObject;
 
@@ -26,7 +26,7 @@ final class Trees {
         for (Map.Entry<String, Object> e : d.entries().entrySet()) {
             Object v = e.getValue();
             out.append(path).append('/').append(e.getKey()).append(" = ")
-                    .append(v instanceof ManagedObject m ? m.type().name() + "@" + System.identityHashCode(m) : Cell.print(v))
+                    .append(v instanceof ManagedObject m ? m.type().name() + "@" + System.identityHashCode(m) : PolicyEngine.print(v))
                     .append('\n');
             if (v instanceof Domain child) {
                 describe(child, path + "/" + e.getKey(), out, seen);

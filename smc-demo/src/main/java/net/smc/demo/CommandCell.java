@@ -4,9 +4,9 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.OptionalInt;
 import java.util.Random;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**
@@ -16,12 +16,12 @@ import net.smc.policy.RunResult;
  * and the random source unseeded.
  */
 final class CommandCell {
-    private final Cell cell;
+    private final PolicyEngine cell;
     private int diagnostics;
     private int failedUnits;
 
     CommandCell(Io io, AuthMode auth, PolicyRepository repository, List<String> userArguments) {
-        this.cell = Cell.builder()
+        this.cell = PolicyEngine.builder()
                 .output(io.stdout()::println)
                 .errors(d -> {
                     diagnostics++;
@@ -66,7 +66,7 @@ final class CommandCell {
         }
     }
 
-    Cell cell() {
+    PolicyEngine cell() {
         return cell;
     }
 

@@ -11,13 +11,13 @@ import net.smc.core.mission.MissionException;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.security.Credential;
 import net.smc.core.security.CredentialStatus;
-import net.smc.core.security.Identity;
+import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.KeyFileException;
 import net.smc.core.security.KeyFiles;
 import net.smc.core.security.SigningKey;
 import net.smc.core.security.TrustAnchor;
 import net.smc.core.security.VerificationKey;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * The files {@code smc node} starts from, read and checked against each other: the vehicle's key and
@@ -30,7 +30,7 @@ import net.smc.policy.PolicyRepository;
  */
 final class NodeFiles {
     /** What the files say: who this vehicle is, whom it trusts, and the mission it serves. */
-    record Node(Identity identity, TrustAnchor trust, Mission mission) {
+    record Node(SigningIdentity identity, TrustAnchor trust, Mission mission) {
     }
 
     /**
@@ -97,7 +97,7 @@ final class NodeFiles {
             throw new Refused("--credential " + credential + " is for mission '" + cred.mission() + "', but --mission "
                     + mission + " is mission '" + loaded.instanceName() + "'");
         }
-        return new Node(new Identity(signingKey, cred), new TrustAnchor(authorityKey, loaded.instanceName()), loaded);
+        return new Node(new SigningIdentity(signingKey, cred), new TrustAnchor(authorityKey, loaded.instanceName()), loaded);
     }
 
     private static String refusal(CredentialStatus status, Credential cred, Path authority, VerificationKey authorityKey,

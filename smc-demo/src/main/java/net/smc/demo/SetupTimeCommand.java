@@ -14,7 +14,7 @@ import java.util.concurrent.Callable;
 import net.smc.core.cell.Scheme;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.experiment.Calibration;
 import net.smc.sim.experiment.CpuCosts;
 import net.smc.sim.experiment.GeneratedMission;

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.RunResult;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -60,7 +60,7 @@ final class ShellCommand implements Callable<Integer> {
     }
 
     private void readInputs(CommandCell cell) throws IOException {
-        Cell.Session session = cell.cell().session();
+        PolicyEngine.Session session = cell.cell().session();
         ShellInput input = new ShellInput(io);
         for (String text = input.next(); text != null; text = input.next()) {
             cell.cell().timers().runDue();   // the shell runs due timers between inputs, never while it waits
@@ -69,7 +69,7 @@ final class ShellCommand implements Callable<Integer> {
             }
             RunResult result = session.run(SOURCE, text);
             if (result.ok()) {
-                io.stdout().println(Cell.print(result.value()));
+                io.stdout().println(PolicyEngine.print(result.value()));
             }
             if (cell.exitStatus().isPresent()) {
                 return;

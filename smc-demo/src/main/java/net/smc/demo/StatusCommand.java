@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.time.Duration;
 import java.util.concurrent.Callable;
 import net.smc.core.transport.Address;
-import net.smc.core.transport.StatusClient;
+import net.smc.core.transport.udp.StatusClient;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;

@@ -14,7 +14,7 @@ import net.smc.core.mission.MissionException;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.mission.Parameter;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;

@@ -1,6 +1,6 @@
 /**
  * The {@code smc} command: runs PonderTalk files in a self-managed cell's policy engine
- * ({@link net.smc.policy.Cell}), offers an interactive shell on one cell, and runs a vehicle's whole
+ * ({@link net.smc.policy.PolicyEngine}), offers an interactive shell on one cell, and runs a vehicle's whole
  * cell as a network node.
  *
  * <p>Start at {@link net.smc.demo.Main}, the picocli root command; its subcommands are

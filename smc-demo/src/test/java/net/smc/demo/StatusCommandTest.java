@@ -11,7 +11,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import net.smc.core.transport.StatusResponder;
+import net.smc.core.transport.udp.StatusResponder;
 import net.smc.core.transport.udp.UdpSettings;
 import net.smc.core.transport.udp.UdpTransport;
 import org.junit.jupiter.api.AfterEach;

@@ -1,5 +1,6 @@
 package net.smc.policy;
 
+import net.smc.policy.api.Diagnostic;
 import java.util.List;
 
 /**

@@ -1,5 +1,6 @@
 package net.smc.policy;
 
+import net.smc.policy.api.TimerScheduler;
 import java.util.Objects;
 import java.util.OptionalLong;
 import java.util.PriorityQueue;

@@ -1,5 +1,7 @@
 package net.smc.policy;
 
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.AuthMode;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
@@ -7,20 +9,20 @@ import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
 import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 import org.junit.jupiter.api.Test;
 
 /** The parts of the embedding API that the golden scripts cannot reach. */
 class CellApiTest {
     private final List<String> reported = new ArrayList<>();
 
-    private Cell cell(AuthMode mode) {
-        return Cell.builder().auth(mode).errors(d -> reported.add(d.toString())).build();
+    private PolicyEngine cell(AuthMode mode) {
+        return PolicyEngine.builder().auth(mode).errors(d -> reported.add(d.toString())).build();
     }
 
     @Test
     void runResult_carriesTheDiagnosticsOfItsOwnUnitOnly() {
-        Cell cell = cell(AuthMode.OFF);
+        PolicyEngine cell = cell(AuthMode.OFF);
         cell.run("a.p2", "root frob.");
         RunResult second = cell.run("b.p2", "root print: 1. root bar.");
         assertEquals(List.of("b.p2:1:21: unknown operation 'bar' on SelfManagedCell"),
@@ -30,7 +32,7 @@ class CellApiTest {
 
     @Test
     void runResult_includesErrorsOfPoliciesTheUnitTriggered() {
-        Cell cell = cell(AuthMode.OFF);
+        PolicyEngine cell = cell(AuthMode.OFF);
         cell.run("boot.p2", """
                 root/event at: "go" put: (root/factory/event create: #()).
                 p := root/factory/ecapolicy create. p event: root/event/go; action: [3 frob]; active: true.
@@ -48,7 +50,7 @@ class CellApiTest {
 
     @Test
     void sendAs_isCheckedFromTheGivenSubject() {
-        Cell cell = cell(AuthMode.DENY);
+        PolicyEngine cell = cell(AuthMode.DENY);
         cell.run("boot.p2", TWO_DOMAINS);
         cell.endBoot();
         Object caller = cell.resolve("root/caller");
@@ -64,7 +66,7 @@ class CellApiTest {
 
     @Test
     void sendAs_rootAsSubjectIsNeverChecked() {
-        Cell cell = cell(AuthMode.DENY);
+        PolicyEngine cell = cell(AuthMode.DENY);
         cell.run("boot.p2", TWO_DOMAINS);
         cell.endBoot();
         cell.sendAs(cell.root(), cell.resolve("root/target"), "at:put:", "k", "v");
@@ -73,14 +75,14 @@ class CellApiTest {
 
     @Test
     void sendAs_unknownSelectorIsAnErrorNamingIt() {
-        Cell cell = cell(AuthMode.OFF);
+        PolicyEngine cell = cell(AuthMode.OFF);
         PonderError e = assertThrows(PonderError.class, () -> cell.sendAs(cell.root(), cell.root(), "frob"));
         assertEquals("unknown operation 'frob' on SelfManagedCell", e.getMessage());
     }
 
     @Test
     void creationListener_hearsOfEveryPolicyHoweverMade() {
-        Cell cell = cell(AuthMode.ALLOW);
+        PolicyEngine cell = cell(AuthMode.ALLOW);
         List<Object> created = new ArrayList<>();
         java.util.function.Consumer<net.smc.policy.runtime.ManagedObject> listener = created::add;
         cell.runtime().listenCreations(listener);
@@ -97,7 +99,7 @@ class CellApiTest {
 
     @Test
     void attachments_listTheNodesAPolicyIsAttachedTo() {
-        Cell cell = cell(AuthMode.OFF);
+        PolicyEngine cell = cell(AuthMode.OFF);
         cell.run("make.p2", """
                 root at: "d" put: root/factory/domain create.
                 p := root/factory/ecapolicy create. root at: "p" put: p.

@@ -1,5 +1,7 @@
 package net.smc.policy;
 
+import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.Diagnostic;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,10 +10,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import org.junit.jupiter.api.Test;
 
-/** The embedding examples of the README and of {@link Cell}'s javadoc, run as written there. */
+/** The embedding examples of the README and of {@link PolicyEngine}'s javadoc, run as written there. */
 class EmbeddingExampleTest {
 
     /** A managed object an application provides: PonderTalk sees its annotated methods. */
@@ -37,7 +39,7 @@ class EmbeddingExampleTest {
     void readmeExample_runsPolicyAndManagedObject() {
         List<String> lines = new ArrayList<>();
         List<Diagnostic> errors = new ArrayList<>();
-        Cell cell = Cell.builder()
+        PolicyEngine cell = PolicyEngine.builder()
                 .output(lines::add)
                 .errors(errors::add)
                 .register("Thermometer", Thermometer.class)
@@ -63,7 +65,7 @@ class EmbeddingExampleTest {
     @Test
     void cellJavadocExample_printsTheLevel() {
         List<String> lines = new ArrayList<>();
-        Cell cell = Cell.builder().output(lines::add).build();
+        PolicyEngine cell = PolicyEngine.builder().output(lines::add).build();
         cell.run("boot.p2", """
                 root/event at: "alarm" put: (root/factory/event create: #("level")).
                 p := root/factory/ecapolicy create.
@@ -79,7 +81,7 @@ class EmbeddingExampleTest {
         List<String> lines = new ArrayList<>();
         List<Diagnostic> errors = new ArrayList<>();
         Path repo = Path.of(System.getProperty("smc.repo.dir", "../policies"));
-        Cell cell = Cell.builder().output(lines::add).errors(errors::add).repository(new PolicyRepository(repo)).build();
+        PolicyEngine cell = PolicyEngine.builder().output(lines::add).errors(errors::add).repository(new PolicyRepository(repo)).build();
 
         RunResult result = cell.load("policy:/examples/alarm");
 

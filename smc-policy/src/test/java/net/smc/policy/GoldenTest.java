@@ -1,5 +1,8 @@
 package net.smc.policy;
 
+import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.Limits;
+import net.smc.policy.api.AuthMode;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -73,7 +76,7 @@ class GoldenTest {
         }
         List<String> lines = new ArrayList<>();
         long[] now = {FIXED_CLOCK};
-        Cell cell = Cell.builder()
+        PolicyEngine cell = PolicyEngine.builder()
                 .output(lines::add)
                 .errors(d -> lines.add(d.toString()))
                 .auth(auth)
@@ -102,7 +105,7 @@ class GoldenTest {
     }
 
     /** Moves the virtual clock on by {@code millis}, running each timer task at its due time. */
-    static void advance(Cell cell, long[] now, long millis) {
+    static void advance(PolicyEngine cell, long[] now, long millis) {
         long target = now[0] + millis;
         while (cell.timers().nextDue().isPresent() && cell.timers().nextDue().getAsLong() <= target
                 && cell.exitStatus().isEmpty()) {

@@ -1,5 +1,6 @@
 package net.smc.policy;
 
+import net.smc.policy.api.PolicyRepository;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -78,7 +79,7 @@ class PolicyRepositoryTest {
         PolicyRepository repo = repositoryWith("demo/broken.p2", "root print: 1.\nroot frob.");
         List<String> lines = new ArrayList<>();
         List<String> errors = new ArrayList<>();
-        Cell cell = Cell.builder().output(lines::add).errors(d -> errors.add(d.toString())).repository(repo).build();
+        PolicyEngine cell = PolicyEngine.builder().output(lines::add).errors(d -> errors.add(d.toString())).repository(repo).build();
 
         RunResult result = cell.load("policy:/demo/broken");
 
@@ -90,7 +91,7 @@ class PolicyRepositoryTest {
     @Test
     void cellLoad_ofAMissingUri_saysFileNotFound() {
         List<String> errors = new ArrayList<>();
-        Cell cell = Cell.builder().errors(d -> errors.add(d.toString())).repository(new PolicyRepository(dir)).build();
+        PolicyEngine cell = PolicyEngine.builder().errors(d -> errors.add(d.toString())).repository(new PolicyRepository(dir)).build();
         cell.load("policy:/no/such");
         assertEquals(List.of("load:1:6: cannot read 'policy:/no/such': file not found"), errors);
     }
@@ -98,7 +99,7 @@ class PolicyRepositoryTest {
     @Test
     void cellLoad_withoutRepository_saysSo() {
         List<String> errors = new ArrayList<>();
-        Cell cell = Cell.builder().errors(d -> errors.add(d.toString())).build();
+        PolicyEngine cell = PolicyEngine.builder().errors(d -> errors.add(d.toString())).build();
         cell.load("policy:/x");
         assertEquals(List.of("load:1:6: cannot read 'policy:/x': no policy repository is configured"), errors);
     }

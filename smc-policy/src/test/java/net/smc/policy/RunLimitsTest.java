@@ -1,5 +1,7 @@
 package net.smc.policy;
 
+import net.smc.policy.api.Limits;
+import net.smc.policy.api.Diagnostic;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -13,8 +15,8 @@ class RunLimitsTest {
     private final List<Diagnostic> errors = new ArrayList<>();
     private final List<String> output = new ArrayList<>();
 
-    private Cell cell(Limits limits) {
-        return Cell.builder().limits(limits).errors(errors::add).output(output::add).build();
+    private PolicyEngine cell(Limits limits) {
+        return PolicyEngine.builder().limits(limits).errors(errors::add).output(output::add).build();
     }
 
     private List<String> messages() {
@@ -23,7 +25,7 @@ class RunLimitsTest {
 
     @Test
     void eventStorm_isCutAtItsFirstOverflowAndReportedOnce() {
-        Cell cell = cell(Limits.DEFAULT.withMaxCallDepth(50));
+        PolicyEngine cell = cell(Limits.DEFAULT.withMaxCallDepth(50));
 
         RunResult result = cell.run("storm.p2", """
                 t := root/factory/event create: #().
@@ -41,7 +43,7 @@ class RunLimitsTest {
 
     @Test
     void errorsBeyondThePerRunLimit_areCountedNotReported() {
-        Cell cell = cell(Limits.DEFAULT.withMaxErrorsPerRun(3));
+        PolicyEngine cell = cell(Limits.DEFAULT.withMaxErrorsPerRun(3));
 
         RunResult result = cell.run("many.p2", """
                 t := root/factory/event create: #().
@@ -60,7 +62,7 @@ class RunLimitsTest {
 
     @Test
     void errorsOfARaiseFromJava_areBoundedToo() {
-        Cell cell = cell(Limits.DEFAULT.withMaxErrorsPerRun(2));
+        PolicyEngine cell = cell(Limits.DEFAULT.withMaxErrorsPerRun(2));
         cell.run("boot.p2", """
                 root/event at: "e" put: (root/factory/event create: #()).
                 #(1 2 3 4 5) do: [:i | root/factory/ecapolicy create event: root/event/e; action: [nil frob]; active: true].
@@ -74,7 +76,7 @@ class RunLimitsTest {
 
     @Test
     void buildingHugeStringsOneSendAtATime_endsAtTheBuiltLimit() {
-        Cell cell = cell(Limits.DEFAULT.withMaxBuiltPerRun(100_000));
+        PolicyEngine cell = cell(Limits.DEFAULT.withMaxBuiltPerRun(100_000));
 
         RunResult result = cell.run("grow.p2", """
                 h := #() asHash.
@@ -89,7 +91,7 @@ class RunLimitsTest {
 
     @Test
     void bulkCopiesAndPrinting_countAgainstTheBuiltLimit() {
-        Cell cell = cell(Limits.DEFAULT.withMaxBuiltPerRun(1_000));
+        PolicyEngine cell = cell(Limits.DEFAULT.withMaxBuiltPerRun(1_000));
 
         cell.run("copy.p2", """
                 a := #(1 2 3 4 5 6 7 8 9 10).
@@ -109,7 +111,7 @@ class RunLimitsTest {
     @Test
     void aRunLongerThanTheTimeLimitByTheInjectedClock_ends() {
         AtomicLong now = new AtomicLong();
-        Cell cell = Cell.builder().limits(Limits.DEFAULT.withMaxRunMillis(5_000)).errors(errors::add)
+        PolicyEngine cell = PolicyEngine.builder().limits(Limits.DEFAULT.withMaxRunMillis(5_000)).errors(errors::add)
                 .clock(() -> now.addAndGet(1)).build();
 
         RunResult result = cell.run("spin.p2", "[true] whileTrue: [1].");
@@ -121,7 +123,7 @@ class RunLimitsTest {
 
     @Test
     void aClockThatDoesNotMove_neverTripsTheTimeLimit() {
-        Cell cell = Cell.builder().limits(Limits.DEFAULT.withMaxRunMillis(1).withMaxSteps(100_000))
+        PolicyEngine cell = PolicyEngine.builder().limits(Limits.DEFAULT.withMaxRunMillis(1).withMaxSteps(100_000))
                 .errors(errors::add).build();
 
         cell.run("spin.p2", "[true] whileTrue: [1].");

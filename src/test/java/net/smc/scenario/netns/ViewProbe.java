@@ -14,7 +14,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 
 import net.smc.core.transport.Address;
-import net.smc.core.transport.StatusClient;
+import net.smc.core.transport.udp.StatusClient;
 
 /**
  * The eyes of a multi-process test: a program run on a host of the lab (the test's own JVM is

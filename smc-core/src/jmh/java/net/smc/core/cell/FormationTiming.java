@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import net.smc.core.host.CellHost;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.DatagramSocket;
@@ -19,7 +20,7 @@ import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * How long the reconnaissance team takes to form and to recover from failures, under both schemes

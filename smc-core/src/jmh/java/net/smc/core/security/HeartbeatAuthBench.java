@@ -57,7 +57,7 @@ public class HeartbeatAuthBench {
         SigningKey key = SigningKey.generate(random);
         Credential credential = Credential.issue(new Claims(id, key.verificationKey(), MISSION, NOW - 60_000,
                 NOW + 3_600_000), authority);
-        return SecureEndpoint.builder(new Identity(key, credential), trust, clock).random(random).build();
+        return SecureEndpoint.builder(new SigningIdentity(key, credential), trust, clock).random(random).build();
     }
 
     private static void shakeHands(SecureEndpoint a, SecureEndpoint b) {

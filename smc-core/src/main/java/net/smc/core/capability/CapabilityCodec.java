@@ -79,14 +79,14 @@ public final class CapabilityCodec {
 
     /** @throws IllegalArgumentException when a field is null, not well-formed Unicode or over a limit (named) */
     public byte[] encode(CapabilitySummary summary) {
-        WireWriter w = header(SUMMARY, SUMMARY_NAME, summary.vehicle(), summary.resources());
+        CapabilityWireWriter w = header(SUMMARY, SUMMARY_NAME, summary.vehicle(), summary.resources());
         w.strings(summary.tasks(), "tasks");
         return w.bytes();
     }
 
     /** @throws IllegalArgumentException when a field is null, not well-formed Unicode or over a limit (named) */
     public byte[] encode(CapabilityDescription description) {
-        WireWriter w = header(DESCRIPTION, DESCRIPTION_NAME, description.vehicle(), description.resources());
+        CapabilityWireWriter w = header(DESCRIPTION, DESCRIPTION_NAME, description.vehicle(), description.resources());
         List<TaskDescription> tasks = description.tasks();
         w.count(tasks.size(), "tasks");
         for (int t = 0; t < tasks.size(); t++) {
@@ -114,8 +114,8 @@ public final class CapabilityCodec {
         return w.bytes();
     }
 
-    private WireWriter header(int kind, String what, String vehicle, SortedSet<String> resources) {
-        WireWriter w = new WireWriter(limits, what);
+    private CapabilityWireWriter header(int kind, String what, String vehicle, SortedSet<String> resources) {
+        CapabilityWireWriter w = new CapabilityWireWriter(limits, what);
         w.u8(kind);
         w.u8(VERSION);
         w.string(vehicle, "vehicle");
@@ -145,7 +145,7 @@ public final class CapabilityCodec {
      */
     public CapabilitySummary readSummary(ByteBuffer buffer) throws CapabilityFormatException {
         ByteBuffer in = buffer.duplicate();   // big-endian, whatever the caller's order
-        WireReader r = new WireReader(in, limits, SUMMARY_NAME);
+        CapabilityWireReader r = new CapabilityWireReader(in, limits, SUMMARY_NAME);
         readHeader(r, SUMMARY);
         String vehicle = r.string("vehicle");
         SortedSet<String> resources = r.sortedSet("resources");
@@ -157,7 +157,7 @@ public final class CapabilityCodec {
     /** Reads one description from the buffer's position, as {@link #readSummary(ByteBuffer)} does. */
     public CapabilityDescription readDescription(ByteBuffer buffer) throws CapabilityFormatException {
         ByteBuffer in = buffer.duplicate();
-        WireReader r = new WireReader(in, limits, DESCRIPTION_NAME);
+        CapabilityWireReader r = new CapabilityWireReader(in, limits, DESCRIPTION_NAME);
         readHeader(r, DESCRIPTION);
         String vehicle = r.string("vehicle");
         SortedSet<String> resources = r.sortedSet("resources");
@@ -170,7 +170,7 @@ public final class CapabilityCodec {
         return new CapabilityDescription(vehicle, resources, tasks);
     }
 
-    private static TaskDescription readTask(WireReader r, String at) throws CapabilityFormatException {
+    private static TaskDescription readTask(CapabilityWireReader r, String at) throws CapabilityFormatException {
         String name = r.string(at + ".task");
         int opCount = r.count(at + ".operations");
         List<OperationDescription> ops = new ArrayList<>();
@@ -194,7 +194,7 @@ public final class CapabilityCodec {
         return new TaskDescription(name, ops, events);
     }
 
-    private static void readHeader(WireReader r, int kind) throws CapabilityFormatException {
+    private static void readHeader(CapabilityWireReader r, int kind) throws CapabilityFormatException {
         int found = r.u8("kind");
         if (found != kind) {
             String seen = found == SUMMARY ? "a " + SUMMARY_NAME : found == DESCRIPTION ? "a " + DESCRIPTION_NAME

@@ -1,6 +1,6 @@
 /**
  * Capability descriptions (the paper's section IV-B): what a vehicle can do. Start with
- * {@link net.smc.core.capability.Capabilities}, the Capability module of one vehicle: it holds the
+ * {@link net.smc.core.task.Capabilities}, the Capability module of one vehicle: it holds the
  * vehicle's resources and loaded tasks and prepares, on request, the full
  * {@link net.smc.core.capability.CapabilityDescription} (every task's operations and events, from
  * Table V) and its compact {@link net.smc.core.capability.CapabilitySummary}.
@@ -15,3 +15,4 @@
  * }</pre>
  */
 package net.smc.core.capability;
+

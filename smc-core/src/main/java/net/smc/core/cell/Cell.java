@@ -14,7 +14,7 @@ import java.util.function.Consumer;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.comm.CommunicationManager;
 import net.smc.core.comm.SenderSettings;
-import net.smc.core.discovery.Discovery;
+import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.message.Identity;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
@@ -28,7 +28,7 @@ import net.smc.core.role.RequiredOperation;
 import net.smc.core.role.TaskOperation;
 import net.smc.core.task.StateHandover;
 import net.smc.core.task.Task;
-import net.smc.policy.AuthMode;
+import net.smc.policy.api.AuthMode;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
 import net.smc.core.role.TaskProvider;
@@ -38,8 +38,8 @@ import net.smc.core.security.Credential;
 import net.smc.core.transport.Clock;
 import net.smc.core.transport.Scheduler;
 import net.smc.core.transport.Transport;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**
@@ -72,7 +72,7 @@ public final class Cell {
     private final String vehicle;
     private final Mission mission;
     private final Slots slots;
-    private final net.smc.policy.Cell engine;
+    private final net.smc.policy.PolicyEngine engine;
     private final RoleManager roles;
     private final CommunicationManager comm;
     private final TeamProtocol protocol;
@@ -94,7 +94,7 @@ public final class Cell {
         Timing timing = b.timing != null ? b.timing : Timing.of(mission);
         SplittableRandom random = new SplittableRandom(b.seed);
         Consumer<String> output = b.output;
-        this.engine = net.smc.policy.Cell.builder()
+        this.engine = net.smc.policy.PolicyEngine.builder()
                 .clock(b.clock::nowMillis)
                 .scheduler((delay, task) -> b.scheduler.schedule(delay, task)::cancel)   // timers in the cell's (virtual) time
                 .random(random.split())
@@ -111,7 +111,7 @@ public final class Cell {
         if (!boot.diagnostics().isEmpty()) {
             throw new IllegalStateException("cell '" + vehicle + "' cannot boot: policy:/boot/events: " + boot.diagnostics());
         }
-        engine.root().put(TEAM, net.smc.policy.Cell.manage(new TeamObject(this)));
+        engine.root().put(TEAM, net.smc.policy.PolicyEngine.manage(new TeamObject(this)));
         if (b.auth != AuthMode.OFF) {
             engine.endBoot();
         }
@@ -168,7 +168,7 @@ public final class Cell {
                 .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
         this.gateway = new ExternalGateway(roles);
-        new Discovery((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
+        new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);
         protocol.register(router);
         if (commanding) {
@@ -374,7 +374,7 @@ public final class Cell {
     }
 
     /** The policy engine, for tasks and tests that reach into it. */
-    public net.smc.policy.Cell engine() {
+    public net.smc.policy.PolicyEngine engine() {
         return engine;
     }
 

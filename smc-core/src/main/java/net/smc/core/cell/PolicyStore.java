@@ -8,7 +8,7 @@ import java.util.Optional;
 import java.util.zip.CRC32;
 
 import net.smc.core.message.PolicyRef;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * The policy files a cell holds, by URI, each with its version. The acting commander fills its

@@ -22,7 +22,7 @@ import net.smc.core.message.Leave;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
-import net.smc.policy.runtime.Nil;
+import net.smc.policy.api.Nil;
 import net.smc.core.transport.Address;
 
 /**

@@ -23,7 +23,7 @@ import net.smc.core.mission.MissionRole;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
 import net.smc.core.transport.Scheduler;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * What every part of the team protocols shares and never changes: the cell's identity (vehicle and

@@ -3,10 +3,10 @@ package net.smc.core.cell;
 import java.math.BigDecimal;
 import java.util.List;
 
-import net.smc.policy.runtime.Managed;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import net.smc.policy.runtime.PArray;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 
 /**
  * {@code root/team}: the roles of the other vehicles of the team, for policies. Its sends go over

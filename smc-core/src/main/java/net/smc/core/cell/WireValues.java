@@ -7,7 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import net.smc.policy.runtime.Nil;
+import net.smc.policy.api.Nil;
 import net.smc.policy.runtime.PArray;
 import net.smc.policy.runtime.PHash;
 
@@ -54,7 +54,7 @@ final class WireValues {
         if (v instanceof Map<?, ?> m) {
             return map(m);
         }
-        return net.smc.policy.Cell.print(v);
+        return net.smc.policy.PolicyEngine.print(v);
     }
 
     /** A list of wire values, each element converted by {@link #of}. */

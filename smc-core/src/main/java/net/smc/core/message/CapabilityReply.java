@@ -8,7 +8,7 @@ import net.smc.core.capability.CapabilityDescription;
  */
 public record CapabilityReply(long inReplyTo, CapabilityDescription description) implements Message {
     public CapabilityReply {
-        Capabilities.description("CapabilityReply.description", description);
+        CapabilityLimits.description("CapabilityReply.description", description);
     }
 
     @Override

@@ -9,7 +9,7 @@ import net.smc.core.capability.CapabilitySummary;
 public record DiscoveryReply(long inReplyTo, String mission, CapabilitySummary summary) implements Message {
     public DiscoveryReply {
         Fields.name("DiscoveryReply.mission", mission);
-        Capabilities.summary("DiscoveryReply.summary", summary);
+        CapabilityLimits.summary("DiscoveryReply.summary", summary);
     }
 
     @Override

@@ -21,7 +21,7 @@ public record Invocation(String role, String operation, List<Object> args, Strin
     public Invocation {
         Fields.name("Invocation.role", role);
         Fields.name("Invocation.operation", operation);
-        args = Values.list("Invocation.args", args);
+        args = ValueLimits.list("Invocation.args", args);
         Fields.string("Invocation.caller", caller, 0, WireFormat.MAX_NAME, "a role name, or empty");
         Fields.nonNegative("Invocation.call", call);
         Fields.string("Invocation.origin", origin, 0, WireFormat.MAX_SENDER, "a vehicle id, or empty for the sender");

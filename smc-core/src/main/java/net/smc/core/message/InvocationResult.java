@@ -7,7 +7,7 @@ package net.smc.core.message;
 public record InvocationResult(long inReplyTo, boolean ok, Object value, String error) implements Message {
     public InvocationResult {
         if (ok) {
-            value = Values.value("InvocationResult.value", value);
+            value = ValueLimits.value("InvocationResult.value", value);
             if (error != null) {
                 throw new IllegalArgumentException("InvocationResult.error is " + Fields.show(error)
                         + " but ok is true; a successful result has a null error");

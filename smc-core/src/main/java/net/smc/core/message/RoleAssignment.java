@@ -37,7 +37,7 @@ public record RoleAssignment(String mission, String role, Identity identity, Str
         Fields.string("RoleAssignment.parent", parent, 1, WireFormat.MAX_SENDER, "a vehicle id");
         policies = Fields.list("RoleAssignment.policies", policies, WireFormat.MAX_POLICIES);
         Fields.nonNegative("RoleAssignment.epoch", epoch);
-        handover = Values.list("RoleAssignment.handover", handover);
+        handover = ValueLimits.list("RoleAssignment.handover", handover);
         keeps = Fields.list("RoleAssignment.keeps", keeps, MAX_KEEPS);
         ancestors = Fields.list("RoleAssignment.ancestors", ancestors, MAX_ANCESTORS);
         for (String a : ancestors) {

@@ -17,7 +17,7 @@ public record RoleEvent(String role, String event, List<Object> values, String o
     public RoleEvent {
         Fields.name("RoleEvent.role", role);
         Fields.name("RoleEvent.event", event);
-        values = Values.list("RoleEvent.values", values);
+        values = ValueLimits.list("RoleEvent.values", values);
         Fields.string("RoleEvent.origin", origin, 0, WireFormat.MAX_SENDER, "a vehicle id, or empty for the sender");
     }
 

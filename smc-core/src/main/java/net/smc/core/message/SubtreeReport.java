@@ -10,7 +10,7 @@ import java.util.List;
 public record SubtreeReport(String role, List<Object> values) implements Message {
     public SubtreeReport {
         Fields.name("SubtreeReport.role", role);
-        values = Values.list("SubtreeReport.values", values);
+        values = ValueLimits.list("SubtreeReport.values", values);
     }
 
     @Override

@@ -26,9 +26,9 @@ final class TeamBodies {
             (m, w) -> {
                 w.i64(m.inReplyTo());
                 w.string8(m.mission());
-                CapabilityCodec.writeSummary(m.summary(), w);
+                CapabilityBodies.writeSummary(m.summary(), w);
             },
-            r -> new DiscoveryReply(r.i64("inReplyTo"), r.name("mission"), CapabilityCodec.readSummary(r)));
+            r -> new DiscoveryReply(r.i64("inReplyTo"), r.name("mission"), CapabilityBodies.readSummary(r)));
 
     static final BodyCodec<CapabilityRequest> CAPABILITY_REQUEST = new BodyCodec<>(MessageType.CAPABILITY_REQUEST,
             CapabilityRequest.class,
@@ -39,9 +39,9 @@ final class TeamBodies {
             CapabilityReply.class,
             (m, w) -> {
                 w.i64(m.inReplyTo());
-                CapabilityCodec.writeDescription(m.description(), w);
+                CapabilityBodies.writeDescription(m.description(), w);
             },
-            r -> new CapabilityReply(r.i64("inReplyTo"), CapabilityCodec.readDescription(r)));
+            r -> new CapabilityReply(r.i64("inReplyTo"), CapabilityBodies.readDescription(r)));
 
     static final BodyCodec<RoleAssignment> ROLE_ASSIGNMENT = new BodyCodec<>(MessageType.ROLE_ASSIGNMENT,
             RoleAssignment.class,

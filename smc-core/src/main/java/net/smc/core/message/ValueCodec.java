@@ -53,7 +53,7 @@ final class ValueCodec {
             w.u8(LIST);
             writeList(l, w);
         } else {
-            // Records admit only the types above (see Values).
+            // Records admit only the types above (see ValueLimits).
             throw new IllegalStateException("not a PonderTalk value: " + v.getClass().getName());
         }
     }

@@ -127,7 +127,7 @@ final class ClassReader {
 
     private void readBehaviour(XmlElement el) {
         String role = el.name().substring(0, el.name().length() - BEHAVIOUR.length());
-        String problem = Names.roleNameProblem(role);
+        String problem = MissionNames.roleNameProblem(role);
         if (problem != null) {
             reporter.error(el, problem + " (the element <xxxBehaviour> defines role xxx)");
         } else if (roles.stream().anyMatch(r -> r.name().equals(role))) {

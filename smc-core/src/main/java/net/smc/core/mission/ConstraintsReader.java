@@ -134,7 +134,7 @@ final class ConstraintsReader {
             return null;
         }
         List<Ref> refs = new ArrayList<>();
-        for (String role : Names.split(el.attribute(attribute).get())) {
+        for (String role : MissionNames.split(el.attribute(attribute).get())) {
             refs.add(new Ref(role, el));
         }
         return refs;

@@ -130,7 +130,7 @@ final class InstanceReader {
     }
 
     private void readRole(XmlElement el, boolean first) {
-        String problem = Names.roleNameProblem(el.name());
+        String problem = MissionNames.roleNameProblem(el.name());
         if (problem != null) {
             reporter.error(el, problem);
         } else if (!first) {

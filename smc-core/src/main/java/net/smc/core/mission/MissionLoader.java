@@ -15,7 +15,7 @@ import net.smc.core.mission.ClassSpec.ParamDecl;
 import net.smc.core.mission.ClassSpec.Ref;
 import net.smc.core.mission.ClassSpec.RoleDecl;
 import net.smc.core.mission.InstanceSpec.RoleEntry;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * Start here: loads a mission instance file, the mission class file it names, checks both and

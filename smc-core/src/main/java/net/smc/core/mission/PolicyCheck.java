@@ -8,7 +8,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
 import net.smc.policy.lang.SyntaxError;

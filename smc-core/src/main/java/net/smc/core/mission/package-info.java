@@ -7,7 +7,7 @@
  *
  * <p>Start at {@link net.smc.core.mission.MissionLoader}: it reads both files (with the Stax
  * parser of Jackson's XML module, keeping each element's line and column), checks them, resolves
- * the policies in a {@link net.smc.policy.PolicyRepository} and returns an immutable
+ * the policies in a {@link net.smc.policy.api.PolicyRepository} and returns an immutable
  * {@link net.smc.core.mission.Mission}, or a {@link net.smc.core.mission.MissionException} listing
  * every {@link net.smc.core.mission.MissionError} as {@code FILE:LINE:COL: <element>: message}.
  * Inside, one class per phase: {@code XmlReader} (text to a positioned tree), {@code ClassReader}

@@ -11,7 +11,7 @@ package net.smc.core.role;
  */
 public record Caller(String cell, String role) {
     public Caller {
-        Names.check("caller cell", cell);
-        Names.check("caller role", role);
+        RoleNames.check("caller cell", cell);
+        RoleNames.checkRole("caller role", role);
     }
 }

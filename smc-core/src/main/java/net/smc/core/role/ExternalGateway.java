@@ -3,17 +3,17 @@ package net.smc.core.role;
 import java.util.List;
 import java.util.Objects;
 import net.smc.core.role.ExternalCallException.Kind;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 
 /**
  * Where invocations from other vehicles enter a role's external interface (the paper's section
  * II-B.2.A): management operations on the role object, exported task operations, and required
  * events. Each is sent with the caller's subject, {@code root/role/<role>/peers/<caller role>/<cell>},
- * through {@link Cell#sendAs}, so the receiving role's authorisation policies decide it (with the
+ * through {@link PolicyEngine#sendAs}, so the receiving role's authorisation policies decide it (with the
  * cell's default decision, deny in a deployed cell, when none applies). The messaging layer turns
  * incoming requests into calls of this class.
  *

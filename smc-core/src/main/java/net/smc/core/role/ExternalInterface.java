@@ -47,8 +47,8 @@ public record ExternalInterface(List<TaskOperation> exported, List<String> publi
                         + "' is exported twice; a caller names an operation by its selector alone, so it must be unique");
             }
         }
-        published.forEach(e -> Names.check("published event", e));
-        requiredEvents.forEach(e -> Names.check("required event", e));
+        published.forEach(e -> RoleNames.check("published event", e));
+        requiredEvents.forEach(e -> RoleNames.check("required event", e));
     }
 
     /** The exported operation with this selector, or {@code null}. */

@@ -6,8 +6,8 @@ import java.util.List;
 import java.util.Map;
 import net.smc.core.task.Task;
 import net.smc.core.task.TaskDescriptionException;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.AuthorisationPolicy;
 import net.smc.policy.runtime.Domain;
@@ -26,7 +26,7 @@ import net.smc.policy.runtime.Values;
  * tasks it started are stopped, and the domain tree is put back exactly as it was.
  */
 final class LoadTransaction {
-    private final Cell cell;
+    private final PolicyEngine cell;
     private final Domain root;
     private final Role role;
     private final LoadedRole existing;
@@ -43,7 +43,7 @@ final class LoadTransaction {
     private final List<TreeSnapshot.Addition> madeDomains = new ArrayList<>();
     private boolean createdRoleDomain;
 
-    LoadTransaction(Cell cell, Role role, LoadedRole existing, Reassignment reassignment) {
+    LoadTransaction(PolicyEngine cell, Role role, LoadedRole existing, Reassignment reassignment) {
         this.cell = cell;
         this.root = cell.root();
         this.role = role;

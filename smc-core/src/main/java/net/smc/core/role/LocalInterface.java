@@ -16,6 +16,6 @@ public record LocalInterface(List<TaskOperation> operations, List<String> events
     public LocalInterface {
         operations = List.copyOf(operations);
         events = List.copyOf(events);
-        events.forEach(e -> Names.check("local event", e));
+        events.forEach(e -> RoleNames.check("local event", e));
     }
 }

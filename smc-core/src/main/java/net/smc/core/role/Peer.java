@@ -1,7 +1,7 @@
 package net.smc.core.role;
 
-import net.smc.policy.runtime.Managed;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 
 /**
  * The subject that stands for a collaborating role's cell inside a receiving role:

@@ -3,7 +3,7 @@ package net.smc.core.role;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.ManagedObject;
 
 /**
@@ -17,12 +17,12 @@ final class PolicyFactoryTap {
 
     /** A listening tap; {@link #close()} stops listening. */
     static final class Installed implements AutoCloseable {
-        private final Cell cell;
+        private final PolicyEngine cell;
         private final List<ManagedObject> created = new ArrayList<>();
         private final Consumer<ManagedObject> listener = created::add;
         private boolean open = true;
 
-        private Installed(Cell cell) {
+        private Installed(PolicyEngine cell) {
             this.cell = cell;
             cell.runtime().listenCreations(listener);
         }
@@ -44,7 +44,7 @@ final class PolicyFactoryTap {
         }
     }
 
-    static Installed install(Cell cell) {
+    static Installed install(PolicyEngine cell) {
         return new Installed(cell);
     }
 }

@@ -1,8 +1,8 @@
 package net.smc.core.role;
 
 import java.util.Objects;
-import net.smc.policy.Cell;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 
 /**
@@ -17,7 +17,7 @@ public sealed interface PolicySource {
     String label();
 
     /** Runs the file as one unit in the cell. */
-    RunResult runIn(Cell cell);
+    RunResult runIn(PolicyEngine cell);
 
     static PolicySource uri(String uri) {
         return new Uri(uri);
@@ -27,7 +27,7 @@ public sealed interface PolicySource {
         return new Text(name, text);
     }
 
-    /** A file of the policy repository, loaded with {@link Cell#load(String)}. */
+    /** A file of the policy repository, loaded with {@link PolicyEngine#load(String)}. */
     record Uri(String uri) implements PolicySource {
         public Uri {
             Objects.requireNonNull(uri, "uri");
@@ -43,7 +43,7 @@ public sealed interface PolicySource {
         }
 
         @Override
-        public RunResult runIn(Cell cell) {
+        public RunResult runIn(PolicyEngine cell) {
             return cell.load(uri);
         }
     }
@@ -63,7 +63,7 @@ public sealed interface PolicySource {
         }
 
         @Override
-        public RunResult runIn(Cell cell) {
+        public RunResult runIn(PolicyEngine cell) {
             return cell.run(name, text);
         }
     }

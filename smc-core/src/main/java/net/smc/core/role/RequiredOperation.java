@@ -6,7 +6,7 @@ package net.smc.core.role;
  */
 public record RequiredOperation(String role, String selector) {
     public RequiredOperation {
-        Names.check("role of a required operation", role);
-        Names.checkSelector("selector required from role '" + role + "'", selector);
+        RoleNames.checkRole("role of a required operation", role);
+        RoleNames.checkSelector("selector required from role '" + role + "'", selector);
     }
 }

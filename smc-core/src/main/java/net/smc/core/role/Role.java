@@ -41,7 +41,7 @@ public record Role(String name, List<PolicySource> mission, List<PolicySource> a
                    Set<String> manages, ExternalInterface external, LocalInterface local) {
 
     public Role {
-        Names.check("role name", name);
+        RoleNames.checkRole("role name", name);
         mission = List.copyOf(mission);
         authorisations = List.copyOf(authorisations);
         tasks = List.copyOf(tasks);
@@ -51,7 +51,7 @@ public record Role(String name, List<PolicySource> mission, List<PolicySource> a
         checkLabelsUnique(name, mission, authorisations);
         Set<String> taskNames = checkTasksUnique(name, tasks);
         for (String managed : manages) {
-            Names.check("role managed by '" + name + "'", managed);
+            RoleNames.checkRole("role managed by '" + name + "'", managed);
             if (managed.equals(name)) {
                 throw new IllegalArgumentException("role '" + name + "' cannot manage itself");
             }

@@ -10,7 +10,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
 import net.smc.core.task.Task;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.ManagedObject;
 import org.slf4j.Logger;
@@ -51,7 +51,7 @@ public final class RoleManager {
 
     private static final Logger LOG = LoggerFactory.getLogger(RoleManager.class);
 
-    private final Cell cell;
+    private final PolicyEngine cell;
     private final Reassignment reassignment;
     private final Map<String, LoadedRole> roles = new LinkedHashMap<>();
     private boolean loading;
@@ -62,16 +62,16 @@ public final class RoleManager {
         this.reassignment = builder.reassignment;
     }
 
-    public static Builder builder(Cell cell) {
+    public static Builder builder(PolicyEngine cell) {
         return new Builder(cell);
     }
 
     /** Settings of a Role-Manager. */
     public static final class Builder {
-        private final Cell cell;
+        private final PolicyEngine cell;
         private Reassignment reassignment = Reassignment.NONE;
 
-        private Builder(Cell cell) {
+        private Builder(PolicyEngine cell) {
             this.cell = Objects.requireNonNull(cell, "cell");
         }
 
@@ -187,7 +187,7 @@ public final class RoleManager {
         return role == null ? Optional.empty() : Optional.of(role.object.role());
     }
 
-    Cell cell() {
+    PolicyEngine cell() {
         return cell;
     }
 

@@ -6,10 +6,10 @@ import java.util.Map;
 import net.smc.policy.runtime.AuthorisationPolicy;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.Managed;
+import net.smc.policy.api.Managed;
 import net.smc.policy.runtime.ObligationPolicy;
-import net.smc.policy.runtime.Op;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.Op;
+import net.smc.policy.api.PonderError;
 
 /**
  * A loaded role as PonderTalk sees it: the domain {@code root/role/<name>}, holding

@@ -12,7 +12,7 @@ import net.smc.core.task.Task;
  */
 public record TaskBinding(String name, Supplier<? extends Task> factory) {
     public TaskBinding {
-        Names.check("task name", name);
+        RoleNames.check("task name", name);
         Objects.requireNonNull(factory, "factory of task '" + name + "'");
     }
 }

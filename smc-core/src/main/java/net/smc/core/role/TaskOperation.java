@@ -6,7 +6,7 @@ package net.smc.core.role;
  */
 public record TaskOperation(String task, String selector) {
     public TaskOperation {
-        Names.check("task name of an operation", task);
-        Names.checkSelector("selector of an operation of task '" + task + "'", selector);
+        RoleNames.check("task name of an operation", task);
+        RoleNames.checkSelector("selector of an operation of task '" + task + "'", selector);
     }
 }

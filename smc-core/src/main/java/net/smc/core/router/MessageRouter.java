@@ -20,7 +20,7 @@ import org.slf4j.LoggerFactory;
  * receives each packet at most once.
  *
  * <h2>The tables</h2>
- * Each subscriber has a slot, one bit in every table entry (see {@link Bits}).
+ * Each subscriber has a slot, one bit in every table entry (see {@link CopyOnWriteBits}).
  * <ul>
  *   <li>The dispatch table: by type, an array indexed by {@link MessageType#ordinal()} of the
  *       subscribers registered for that whole type; by source, a hash map to a {@link SourceRow}
@@ -105,9 +105,9 @@ public final class MessageRouter {
         Subscriber[] receivers = tables.slots.snapshot();
         long[] type = tables.byType[t];
         SourceRow row = tables.bySource.get(envelope.sender());
-        long[] all = Bits.EMPTY;
-        long[] pair = Bits.EMPTY;
-        long[] excluded = Bits.EMPTY;
+        long[] all = CopyOnWriteBits.EMPTY;
+        long[] pair = CopyOnWriteBits.EMPTY;
+        long[] excluded = CopyOnWriteBits.EMPTY;
         if (row != null) {
             all = row.all;
             pair = row.pairs[t];
@@ -117,7 +117,7 @@ public final class MessageRouter {
         int n = 0;
         int words = receivers.length + 63 >>> 6;
         for (int w = 0; w < words; w++) {
-            long bits = (Bits.word(type, w) | Bits.word(all, w) | Bits.word(pair, w)) & ~Bits.word(excluded, w);
+            long bits = (CopyOnWriteBits.word(type, w) | CopyOnWriteBits.word(all, w) | CopyOnWriteBits.word(pair, w)) & ~CopyOnWriteBits.word(excluded, w);
             while (bits != 0) {
                 deliver(receivers[w << 6 | Long.numberOfTrailingZeros(bits)], envelope);
                 bits &= bits - 1;

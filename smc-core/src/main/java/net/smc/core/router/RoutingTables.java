@@ -30,25 +30,25 @@ final class RoutingTables {
     final RoleSlots slots = new RoleSlots();
 
     RoutingTables() {
-        Arrays.fill(byType, Bits.EMPTY);
+        Arrays.fill(byType, CopyOnWriteBits.EMPTY);
     }
 
     void addType(Subscriber subscriber, int t) {
         int slot = slots.acquire(subscriber);
-        byType[t] = Bits.with(byType[t], slot);
+        byType[t] = CopyOnWriteBits.with(byType[t], slot);
         forEachRow(row -> {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.without(row.excluded[t], slot);
+            row.pairs[t] = CopyOnWriteBits.without(row.pairs[t], slot);
+            row.excluded[t] = CopyOnWriteBits.without(row.excluded[t], slot);
         });
     }
 
     void addSource(Subscriber subscriber, String source) {
         int slot = slots.acquire(subscriber);
         SourceRow row = rowFor(source);
-        row.all = Bits.with(row.all, slot);
+        row.all = CopyOnWriteBits.with(row.all, slot);
         for (int t = 0; t < TYPES; t++) {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.without(row.excluded[t], slot);
+            row.pairs[t] = CopyOnWriteBits.without(row.pairs[t], slot);
+            row.excluded[t] = CopyOnWriteBits.without(row.excluded[t], slot);
         }
     }
 
@@ -56,9 +56,9 @@ final class RoutingTables {
         int slot = slots.acquire(subscriber);
         SourceRow row = rowFor(source);
         if (coveredByAggregate(slot, t, row)) {
-            row.excluded[t] = Bits.without(row.excluded[t], slot);
+            row.excluded[t] = CopyOnWriteBits.without(row.excluded[t], slot);
         } else {
-            row.pairs[t] = Bits.with(row.pairs[t], slot);
+            row.pairs[t] = CopyOnWriteBits.with(row.pairs[t], slot);
         }
         dropIfEmpty(source, row);
     }
@@ -68,10 +68,10 @@ final class RoutingTables {
         if (slot < 0) {
             return;
         }
-        byType[t] = Bits.without(byType[t], slot);
+        byType[t] = CopyOnWriteBits.without(byType[t], slot);
         forEachRow(row -> {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.set(row.excluded[t], slot, Bits.has(row.all, slot));
+            row.pairs[t] = CopyOnWriteBits.without(row.pairs[t], slot);
+            row.excluded[t] = CopyOnWriteBits.set(row.excluded[t], slot, CopyOnWriteBits.has(row.all, slot));
         });
     }
 
@@ -81,10 +81,10 @@ final class RoutingTables {
             return;
         }
         SourceRow row = rowFor(source);
-        row.all = Bits.without(row.all, slot);
+        row.all = CopyOnWriteBits.without(row.all, slot);
         for (int t = 0; t < TYPES; t++) {
-            row.pairs[t] = Bits.without(row.pairs[t], slot);
-            row.excluded[t] = Bits.set(row.excluded[t], slot, Bits.has(byType[t], slot));
+            row.pairs[t] = CopyOnWriteBits.without(row.pairs[t], slot);
+            row.excluded[t] = CopyOnWriteBits.set(row.excluded[t], slot, CopyOnWriteBits.has(byType[t], slot));
         }
         dropIfEmpty(source, row);
     }
@@ -100,8 +100,8 @@ final class RoutingTables {
             return;
         }
         row = rowFor(source);
-        row.pairs[t] = Bits.without(row.pairs[t], slot);
-        row.excluded[t] = Bits.set(row.excluded[t], slot, covered);
+        row.pairs[t] = CopyOnWriteBits.without(row.pairs[t], slot);
+        row.excluded[t] = CopyOnWriteBits.set(row.excluded[t], slot, covered);
         dropIfEmpty(source, row);
     }
 
@@ -111,13 +111,13 @@ final class RoutingTables {
             return;
         }
         for (int t = 0; t < TYPES; t++) {
-            byType[t] = Bits.without(byType[t], slot);
+            byType[t] = CopyOnWriteBits.without(byType[t], slot);
         }
         forEachRow(row -> {
-            row.all = Bits.without(row.all, slot);
+            row.all = CopyOnWriteBits.without(row.all, slot);
             for (int t = 0; t < TYPES; t++) {
-                row.pairs[t] = Bits.without(row.pairs[t], slot);
-                row.excluded[t] = Bits.without(row.excluded[t], slot);
+                row.pairs[t] = CopyOnWriteBits.without(row.pairs[t], slot);
+                row.excluded[t] = CopyOnWriteBits.without(row.excluded[t], slot);
             }
         });
         slots.release(subscriber);
@@ -130,19 +130,19 @@ final class RoutingTables {
         }
         SourceRow row = bySource.get(source);
         if (row == null) {
-            return Bits.has(byType[t], slot);
+            return CopyOnWriteBits.has(byType[t], slot);
         }
-        return (Bits.has(byType[t], slot) || Bits.has(row.all, slot) || Bits.has(row.pairs[t], slot))
-                && !Bits.has(row.excluded[t], slot);
+        return (CopyOnWriteBits.has(byType[t], slot) || CopyOnWriteBits.has(row.all, slot) || CopyOnWriteBits.has(row.pairs[t], slot))
+                && !CopyOnWriteBits.has(row.excluded[t], slot);
     }
 
     private boolean coveredByAggregate(int slot, int t, SourceRow row) {
-        return Bits.has(byType[t], slot) || row != null && Bits.has(row.all, slot);
+        return CopyOnWriteBits.has(byType[t], slot) || row != null && CopyOnWriteBits.has(row.all, slot);
     }
 
     private boolean registeredForAnyType(int slot) {
         for (long[] bits : byType) {
-            if (Bits.has(bits, slot)) {
+            if (CopyOnWriteBits.has(bits, slot)) {
                 return true;
             }
         }

@@ -16,9 +16,9 @@ public record Claims(String vehicleId, VerificationKey vehicleKey, String missio
 
     /** @throws IllegalArgumentException naming the field, its value and the rule it breaks */
     public Claims {
-        Names.encode(vehicleId, "credential", "vehicle id");
+        WireNames.encode(vehicleId, "credential", "vehicle id");
         Objects.requireNonNull(vehicleKey, "vehicleKey");
-        Names.encode(mission, "credential", "mission");
+        WireNames.encode(mission, "credential", "mission");
         if (expiresMillis <= notBeforeMillis) {
             throw new IllegalArgumentException("credential of '" + vehicleId + "': expires at " + expiresMillis
                     + " ms, not after its not-before of " + notBeforeMillis + " ms; it must expire after it becomes valid");

@@ -25,7 +25,7 @@ import java.nio.charset.StandardCharsets;
 final class CredentialCodec {
     static final int VERSION = 1;
     static final int FIXED_BYTES = 1 + 1 + VerificationKey.BYTES + 1 + 8 + 8 + 8 + SigningKey.SIGNATURE_BYTES;
-    static final int MAX_BYTES = FIXED_BYTES + 2 * Names.MAX_BYTES;
+    static final int MAX_BYTES = FIXED_BYTES + 2 * WireNames.MAX_BYTES;
     private static final byte[] CONTEXT = "smc-credential-v1\0".getBytes(StandardCharsets.US_ASCII);
 
     private CredentialCodec() {
@@ -33,8 +33,8 @@ final class CredentialCodec {
 
     /** The signed part of the form: everything but the signature. */
     static byte[] body(Claims claims, KeyId authority) {
-        byte[] id = Names.encode(claims.vehicleId(), "credential", "vehicle id");
-        byte[] mission = Names.encode(claims.mission(), "credential", "mission");
+        byte[] id = WireNames.encode(claims.vehicleId(), "credential", "vehicle id");
+        byte[] mission = WireNames.encode(claims.mission(), "credential", "mission");
         ByteBuffer out = ByteBuffer.allocate(FIXED_BYTES - SigningKey.SIGNATURE_BYTES + id.length + mission.length);
         out.put((byte) VERSION).put((byte) id.length).put(id).put(claims.vehicleKey().bytes())
                 .put((byte) mission.length).put(mission)

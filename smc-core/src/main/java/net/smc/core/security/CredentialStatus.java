@@ -4,9 +4,9 @@ package net.smc.core.security;
 public enum CredentialStatus {
     /** Signed by the trusted authority, within its validity, for the trusted mission. */
     VALID,
-    /** Names another authority's key: it may be genuine, but not for this team. */
+    /** WireNames another authority's key: it may be genuine, but not for this team. */
     FOREIGN_AUTHORITY,
-    /** Names the trusted authority, but its signature does not verify: forged or altered. */
+    /** WireNames the trusted authority, but its signature does not verify: forged or altered. */
     BAD_SIGNATURE,
     /** Its not-before lies in the future. */
     NOT_YET_VALID,

@@ -1,6 +1,6 @@
 package net.smc.core.security;
 
-/** A parsed datagram, before any key is checked: one record per family of {@link Envelope} kinds. */
+/** A parsed datagram, before any key is checked: one record per family of {@link FrameCodec} kinds. */
 sealed interface Frame permits Frame.Signed, Frame.Hello, Frame.Keyed {
 
     long timestampMillis();

@@ -24,7 +24,7 @@ final class Inbound {
         long now = e.clock.nowMillis();
         Frame frame;
         try {
-            frame = Envelope.read(datagram);
+            frame = FrameCodec.read(datagram);
         } catch (Malformed m) {
             return reject(Rejection.MALFORMED, null, m.getMessage());
         }
@@ -37,8 +37,8 @@ final class Inbound {
             }
             Frame.Keyed k = (Frame.Keyed) frame;
             return switch (k.kind()) {
-                case Envelope.PAIR_MAC -> pairMac(k, now);
-                case Envelope.TEAM_MAC -> teamMac(k, now);
+                case FrameCodec.PAIR_MAC -> pairMac(k, now);
+                case FrameCodec.TEAM_MAC -> teamMac(k, now);
                 default -> teamKey(k, now);
             };
         } catch (Malformed m) {
@@ -47,7 +47,7 @@ final class Inbound {
     }
 
     private Unwrapped signed(Frame.Signed s, long now) {
-        Unwrapped refused = checkSigned(Envelope.SIGNED, s.credential(), s.datagram(), s.signedLength(), s, now);
+        Unwrapped refused = checkSigned(FrameCodec.SIGNED, s.credential(), s.datagram(), s.signedLength(), s, now);
         if (refused != null) {
             return refused;
         }
@@ -65,14 +65,14 @@ final class Inbound {
     private Unwrapped hello(Frame.Hello h, long now) throws Malformed {
         String peer = h.credential().vehicleId();
         String who = "handshake from '" + peer + "'";
-        Unwrapped refused = checkSigned(Envelope.HELLO, h.credential(), h.datagram(), h.signedLength(), h, now);
+        Unwrapped refused = checkSigned(FrameCodec.HELLO, h.credential(), h.datagram(), h.signedLength(), h, now);
         if (refused != null) {
             return refused;
         }
         if (!h.recipient().equals(e.id())) {
             return reject(Rejection.NOT_FOR_ME, peer, who + " is addressed to '" + h.recipient() + "', not to '" + e.id() + "'");
         }
-        Peer known = e.peers.get(peer);
+        PeerState known = e.peers.get(peer);
         if (known != null && h.counter() <= known.lastHelloCounter) {
             return reject(Rejection.REPLAY, peer, who + ": counter " + h.counter()
                     + " is not after the newest handshake taken from it (" + known.lastHelloCounter + ")");
@@ -83,7 +83,7 @@ final class Inbound {
                 ? PairKeys.derive(mine.agree(h.ephemeral()), e.id(), mine.publicBytes(), peer, h.ephemeral())
                 : null;
         // every check has passed: from here on, commit
-        Peer p = accept(h.credential(), h, now);
+        PeerState p = accept(h.credential(), h, now);
         p.ephemeral = mine;
         p.peerEphemeral = h.ephemeral();
         p.lastHelloCounter = h.counter();
@@ -170,11 +170,11 @@ final class Inbound {
     /** The common checks of the signed kinds: reflection, credential, signature, time, counter. */
     private Unwrapped checkSigned(int kind, Credential credential, byte[] datagram, int signedLength, Frame frame, long now) {
         String sender = credential.vehicleId();
-        String who = Envelope.kindName(kind) + " from '" + sender + "'";
+        String who = FrameCodec.kindName(kind) + " from '" + sender + "'";
         if (sender.equals(e.id())) {
             return reject(Rejection.NOT_FOR_ME, sender, who + ": carries this endpoint's own credential; a reflection");
         }
-        Peer known = e.peers.get(sender);
+        PeerState known = e.peers.get(sender);
         CredentialStatus status = known != null && credential.equals(known.credential)
                 ? e.trust.checkTimeAndMission(credential, now)
                 : e.trust.verify(credential, now);
@@ -233,15 +233,15 @@ final class Inbound {
     }
 
     /** Commits an authenticated signed message: the peer's record, its credential and its counter. */
-    private Peer accept(Credential credential, Frame frame, long now) {
-        Peer p = e.peerRecord(credential.vehicleId(), now);
+    private PeerState accept(Credential credential, Frame frame, long now) {
+        PeerState p = e.peerRecord(credential.vehicleId(), now);
         p.credential = credential;
         p.signedWindow.mark(frame.counter(), frame.timestampMillis());
         return p;
     }
 
     private Session sessionOf(Frame.Keyed k) {
-        Peer p = e.peers.get(k.sender());
+        PeerState p = e.peers.get(k.sender());
         return p == null ? null : p.session;
     }
 
@@ -253,7 +253,7 @@ final class Inbound {
     }
 
     private static String describe(Frame.Keyed k) {
-        return Envelope.kindName(k.kind()) + " from '" + k.sender() + "'";
+        return FrameCodec.kindName(k.kind()) + " from '" + k.sender() + "'";
     }
 
     private Unwrapped reject(Rejection reason, String claimedSender, String detail) {

@@ -39,12 +39,12 @@ import net.smc.core.transport.Transport;
 public final class SecureEndpoint {
     private static final int PRUNE_ABOVE = 1024;
 
-    final Identity identity;
+    final SigningIdentity identity;
     final TrustAnchor trust;
     final Clock clock;
     final SecuritySettings settings;
     final Stats stats = new Stats();
-    final Map<String, Peer> peers = new HashMap<>();
+    final Map<String, PeerState> peers = new HashMap<>();
     final byte[] idBytes;
     TeamKey team;
     private final SecureRandom random;
@@ -64,7 +64,7 @@ public final class SecureEndpoint {
     }
 
     /** An endpoint for {@code identity} that trusts {@code trust} and reads time from {@code clock}. */
-    public static Builder builder(Identity identity, TrustAnchor trust, Clock clock) {
+    public static Builder builder(SigningIdentity identity, TrustAnchor trust, Clock clock) {
         return new Builder(identity, trust, clock);
     }
 
@@ -76,9 +76,9 @@ public final class SecureEndpoint {
     /** The envelope bytes {@code protection} adds to a payload from this endpoint. */
     public int overhead(Protection protection) {
         return switch (protection) {
-            case SIGNED -> Envelope.signedOverhead(credentialBytes.length);
-            case PAIR_MAC -> Envelope.pairOverhead(idBytes.length);
-            case TEAM_MAC -> Envelope.teamOverhead(idBytes.length);
+            case SIGNED -> FrameCodec.signedOverhead(credentialBytes.length);
+            case PAIR_MAC -> FrameCodec.pairOverhead(idBytes.length);
+            case TEAM_MAC -> FrameCodec.teamOverhead(idBytes.length);
         };
     }
 
@@ -94,7 +94,7 @@ public final class SecureEndpoint {
      */
     public byte[] wrapSigned(byte[] payload) {
         fits(Protection.SIGNED, payload);
-        byte[] datagram = Envelope.signed(credentialBytes, clock.nowMillis(), nextCounter(), payload);
+        byte[] datagram = FrameCodec.signed(credentialBytes, clock.nowMillis(), nextCounter(), payload);
         sign(datagram);
         stats.signedWrapped++;
         return datagram;
@@ -109,8 +109,8 @@ public final class SecureEndpoint {
     public byte[] wrapFor(String peer, byte[] payload) {
         Session session = sessionWith(peer, "wrap a payload for it");
         fits(Protection.PAIR_MAC, payload);
-        byte[] datagram = Envelope.keyed(Envelope.PAIR_MAC, 0, idBytes, clock.nowMillis(), nextCounter(), payload, Envelope.MAC);
-        session.sendMac.sign(datagram, datagram.length - Envelope.MAC);
+        byte[] datagram = FrameCodec.keyed(FrameCodec.PAIR_MAC, 0, idBytes, clock.nowMillis(), nextCounter(), payload, FrameCodec.MAC);
+        session.sendMac.sign(datagram, datagram.length - FrameCodec.MAC);
         stats.pairWrapped++;
         return datagram;
     }
@@ -126,8 +126,8 @@ public final class SecureEndpoint {
             throw new IllegalStateException("'" + id() + "' holds no team key: a commander makes one (newTeamKey) and sends it to members (wrapTeamKey)");
         }
         fits(Protection.TEAM_MAC, payload);
-        byte[] datagram = Envelope.keyed(Envelope.TEAM_MAC, team.id, idBytes, clock.nowMillis(), nextCounter(), payload, Envelope.MAC);
-        team.mac.sign(datagram, datagram.length - Envelope.MAC);
+        byte[] datagram = FrameCodec.keyed(FrameCodec.TEAM_MAC, team.id, idBytes, clock.nowMillis(), nextCounter(), payload, FrameCodec.MAC);
+        team.mac.sign(datagram, datagram.length - FrameCodec.MAC);
         stats.teamWrapped++;
         return datagram;
     }
@@ -141,10 +141,10 @@ public final class SecureEndpoint {
      * one that sent a MAC'd message this endpoint forgot the key of): the HELLO proves who sends it.
      */
     public byte[] startHandshake(String peer) {
-        if (Names.checkPeerId(peer).equals(id())) {
+        if (WireNames.checkPeerId(peer).equals(id())) {
             throw new IllegalArgumentException("'" + id() + "' cannot shake hands with itself");
         }
-        Peer p = peerRecord(peer, clock.nowMillis());
+        PeerState p = peerRecord(peer, clock.nowMillis());
         if (p.ephemeral == null) {
             p.ephemeral = Ephemeral.generate(random);
         }
@@ -157,14 +157,14 @@ public final class SecureEndpoint {
      * the last {@link SecuritySettings#handshakeRetryMillis()}.
      */
     public boolean needsHandshake(String peer) {
-        Peer p = peers.get(peer);
+        PeerState p = peers.get(peer);
         return p == null || p.session == null
-                && (p.helloSentMillis == Peer.NEVER || clock.nowMillis() - p.helloSentMillis >= settings.handshakeRetryMillis());
+                && (p.helloSentMillis == PeerState.NEVER || clock.nowMillis() - p.helloSentMillis >= settings.handshakeRetryMillis());
     }
 
     /** Whether there is a session with {@code peer}. */
     public boolean hasSession(String peer) {
-        Peer p = peers.get(peer);
+        PeerState p = peers.get(peer);
         return p != null && p.session != null;
     }
 
@@ -173,24 +173,24 @@ public final class SecureEndpoint {
      * team); a later handshake starts afresh. Its counters are kept, so nothing old replays.
      */
     public void forget(String peer) {
-        Peer p = peers.get(peer);
+        PeerState p = peers.get(peer);
         if (p != null) {
             p.session = null;
             p.ephemeral = null;
             p.peerEphemeral = null;
-            p.helloSentMillis = Peer.NEVER;
+            p.helloSentMillis = PeerState.NEVER;
         }
     }
 
     /** The last verified credential of {@code peer}, if it has authenticated itself. */
     public Optional<Credential> credentialOf(String peer) {
-        Peer p = peers.get(peer);
+        PeerState p = peers.get(peer);
         return p == null ? Optional.empty() : Optional.ofNullable(p.credential);
     }
 
     /** Makes a new random team key and uses it from now on (a commander does this, once per team). */
     public void newTeamKey() {
-        byte[] key = new byte[Envelope.TEAM_KEY_BYTES];
+        byte[] key = new byte[FrameCodec.TEAM_KEY_BYTES];
         random.nextBytes(key);
         team = new TeamKey(key);
     }
@@ -212,8 +212,8 @@ public final class SecureEndpoint {
             throw new IllegalStateException("'" + id() + "' holds no team key to send to '" + peer + "'; make one first (newTeamKey)");
         }
         long ctr = nextCounter();
-        int aadLength = Envelope.keyedHeaderBytes(Envelope.TEAM_KEY, idBytes.length);
-        byte[] header = Envelope.keyed(Envelope.TEAM_KEY, 0, idBytes, clock.nowMillis(), ctr, new byte[0], 0);
+        int aadLength = FrameCodec.keyedHeaderBytes(FrameCodec.TEAM_KEY, idBytes.length);
+        byte[] header = FrameCodec.keyed(FrameCodec.TEAM_KEY, 0, idBytes, clock.nowMillis(), ctr, new byte[0], 0);
         byte[] sealed = Seal.seal(session.sendSeal, ctr, header, aadLength, team.key);
         byte[] datagram = PairKeys.concat(header, sealed);
         stats.teamKeysSent++;
@@ -256,8 +256,8 @@ public final class SecureEndpoint {
     }
 
     /** A signed HELLO to {@code peer}: this side's key for the pair, and the peer's as last seen. */
-    byte[] helloDatagram(String peer, Peer p) {
-        byte[] datagram = Envelope.hello(credentialBytes, clock.nowMillis(), nextCounter(),
+    byte[] helloDatagram(String peer, PeerState p) {
+        byte[] datagram = FrameCodec.hello(credentialBytes, clock.nowMillis(), nextCounter(),
                 peer.getBytes(StandardCharsets.UTF_8), p.ephemeral.publicBytes(), p.peerEphemeral);
         sign(datagram);
         stats.hellosSent++;
@@ -270,27 +270,27 @@ public final class SecureEndpoint {
      * (whatever they could replay would be refused as stale anyway), and those that never
      * authenticated and have no session (handshakes started towards a mere claim).
      */
-    Peer peerRecord(String peer, long nowMillis) {
-        Peer p = peers.get(peer);
+    PeerState peerRecord(String peer, long nowMillis) {
+        PeerState p = peers.get(peer);
         if (p == null) {
             if (peers.size() >= PRUNE_ABOVE) {
                 long horizon = nowMillis - settings.freshnessWindowMillis();
                 peers.values().removeIf(q -> q.idle() && q.signedWindow.newestTimestampMillis() < horizon
                         || q.credential == null && q.session == null);
             }
-            p = new Peer(settings.replayWindow());
+            p = new PeerState(settings.replayWindow());
             peers.put(peer, p);
         }
         return p;
     }
 
     private void sign(byte[] datagram) {
-        int n = datagram.length - Envelope.SIG;
-        System.arraycopy(identity.key().sign(datagram, 0, n), 0, datagram, n, Envelope.SIG);
+        int n = datagram.length - FrameCodec.SIG;
+        System.arraycopy(identity.key().sign(datagram, 0, n), 0, datagram, n, FrameCodec.SIG);
     }
 
     private Session sessionWith(String peer, String purpose) {
-        Peer p = peers.get(Objects.requireNonNull(peer, "peer"));
+        PeerState p = peers.get(Objects.requireNonNull(peer, "peer"));
         if (p == null || p.session == null) {
             throw new IllegalStateException("'" + id() + "' has no session with '" + peer + "' to " + purpose
                     + "; start a handshake first (startHandshake)");
@@ -307,13 +307,13 @@ public final class SecureEndpoint {
 
     /** Collects what an endpoint is given; a clock, an identity and a trust anchor are required. */
     public static final class Builder {
-        private final Identity identity;
+        private final SigningIdentity identity;
         private final TrustAnchor trust;
         private final Clock clock;
         private SecureRandom random;
         private SecuritySettings settings = SecuritySettings.DEFAULTS;
 
-        private Builder(Identity identity, TrustAnchor trust, Clock clock) {
+        private Builder(SigningIdentity identity, TrustAnchor trust, Clock clock) {
             this.identity = Objects.requireNonNull(identity, "identity");
             this.trust = Objects.requireNonNull(trust, "trust");
             this.clock = Objects.requireNonNull(clock, "clock");

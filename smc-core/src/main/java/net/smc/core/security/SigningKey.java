@@ -115,7 +115,7 @@ public final class SigningKey {
         return verificationKey.hashCode();
     }
 
-    /** Names the key by its public id; never shows the private seed. */
+    /** WireNames the key by its public id; never shows the private seed. */
     @Override
     public String toString() {
         return "SigningKey[" + verificationKey.id() + "]";

@@ -20,8 +20,8 @@ final class TeamKey {
     final Map<String, ReplayWindow> windows = new HashMap<>();
 
     TeamKey(byte[] key) {
-        if (key.length != Envelope.TEAM_KEY_BYTES) {
-            throw new IllegalArgumentException("a team key is " + Envelope.TEAM_KEY_BYTES + " bytes; got " + key.length);
+        if (key.length != FrameCodec.TEAM_KEY_BYTES) {
+            throw new IllegalArgumentException("a team key is " + FrameCodec.TEAM_KEY_BYTES + " bytes; got " + key.length);
         }
         this.key = key.clone();
         this.id = ByteBuffer.wrap(Hkdf.derive(null, key, ID_INFO, 4)).getInt();

@@ -14,7 +14,7 @@ public record TrustAnchor(VerificationKey authority, String mission) {
     public TrustAnchor {
         Objects.requireNonNull(authority, "authority");
         if (mission != null) {
-            Names.encode(mission, "trust anchor", "mission");
+            WireNames.encode(mission, "trust anchor", "mission");
         }
     }
 

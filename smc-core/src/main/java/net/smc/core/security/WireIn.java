@@ -52,15 +52,15 @@ final class WireIn {
         return out;
     }
 
-    /** A name: one length byte (1 to {@link Names#MAX_BYTES}), then UTF-8. */
+    /** A name: one length byte (1 to {@link WireNames#MAX_BYTES}), then UTF-8. */
     String name(String field) throws Malformed {
         int at = offset();
         int length = u8(field + " length");
-        if (length == 0 || length > Names.MAX_BYTES) {
-            throw error(at, field, "length " + length + "; it must be 1 to " + Names.MAX_BYTES);
+        if (length == 0 || length > WireNames.MAX_BYTES) {
+            throw error(at, field, "length " + length + "; it must be 1 to " + WireNames.MAX_BYTES);
         }
         need(length, field);
-        String s = Names.decode(data, pos, length);
+        String s = WireNames.decode(data, pos, length);
         if (s == null) {
             throw error(at, field, "not valid UTF-8");
         }

@@ -12,7 +12,7 @@
  * <p>Before a mission, an authority issues each vehicle a {@link net.smc.core.security.Credential}
  * for its key ({@code smc keys}; file formats in {@link net.smc.core.security.KeyFiles}). Then:
  * <pre>{@code
- * Identity me = new Identity(KeyFiles.readPrivateKey(keyFile), KeyFiles.readCredential(credFile));
+ * SigningIdentity me = new SigningIdentity(KeyFiles.readPrivateKey(keyFile), KeyFiles.readCredential(credFile));
  * TrustAnchor trust = new TrustAnchor(KeyFiles.readPublicKey(authorityPub), "rescue");
  * SecureEndpoint endpoint = SecureEndpoint.builder(me, trust, clock).build();
  * Transport secure = new SecureTransport(network.attach(address), endpoint);

@@ -2,9 +2,9 @@ package net.smc.core.task;
 
 import java.util.Objects;
 import net.smc.core.capability.TaskDescription;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -16,7 +16,7 @@ import org.slf4j.LoggerFactory;
  *
  * <p>A task is a managed object: the {@link Op} selectors of its task interface (and of its class)
  * are its PonderTalk operations, plus {@code name}, {@code start}, {@code stop} and
- * {@code isRunning} from this class. {@link #bind(Cell)} puts it at {@code root/task/<name>} and
+ * {@code isRunning} from this class. {@link #bind(PolicyEngine)} puts it at {@code root/task/<name>} and
  * makes an event template per {@link TaskEvent} at {@code root/event/<event>}. The task raises an
  * event by calling its own event method, which it implements by handing the arguments to
  * {@link #raise(String, Object...)}:
@@ -111,7 +111,7 @@ public abstract class Task {
      * @throws IllegalStateException    when the task is bound to another cell, or a path it needs
      *                                  holds something else (the message names the path)
      */
-    public final void bind(Cell cell) throws TaskDescriptionException {
+    public final void bind(PolicyEngine cell) throws TaskDescriptionException {
         Objects.requireNonNull(cell, "cell");
         if (events != null) {
             if (events.cell() == cell) {
@@ -146,7 +146,7 @@ public abstract class Task {
 
     /**
      * Raises one of the task's events into its cell, with the values in attribute order; Java values
-     * convert as {@link Cell#raise(String, Object...)} converts them. Policies run before this
+     * convert as {@link PolicyEngine#raise(String, Object...)} converts them. Policies run before this
      * returns. Unbound, the event is counted in {@link #droppedEvents()} and logged at debug level.
      *
      * @return whether the event was delivered ({@code false}: unbound, or the cell reported an error)

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Map;
 import net.smc.core.capability.EventDescription;
 import net.smc.core.capability.TaskDescription;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.ManagedObject;
@@ -26,12 +26,12 @@ final class TaskEvents {
     static final String EVENTS = "event";
     static final String TASKS = "task";
 
-    private final Cell cell;
+    private final PolicyEngine cell;
     private final Task task;
     private final String taskName;
     private final Map<String, EventTemplate> templates;
 
-    private TaskEvents(Cell cell, Task task, String taskName, Map<String, EventTemplate> templates) {
+    private TaskEvents(PolicyEngine cell, Task task, String taskName, Map<String, EventTemplate> templates) {
         this.cell = cell;
         this.task = task;
         this.taskName = taskName;
@@ -39,7 +39,7 @@ final class TaskEvents {
     }
 
     /** Checks every path first and changes the cell only when all of them are free or compatible. */
-    static TaskEvents bind(Task task, Cell cell) throws TaskDescriptionException {
+    static TaskEvents bind(Task task, PolicyEngine cell) throws TaskDescriptionException {
         TaskDescription description = task.describe();
         if (!TaskDescriber.isIdentifier(description.task())) {
             throw new IllegalStateException("task class " + task.getClass().getName() + " has the name '" + description.task()
@@ -102,11 +102,11 @@ final class TaskEvents {
     }
 
     private static IllegalStateException occupied(String path, Object found, String wanted) {
-        return new IllegalStateException(path + " holds " + Cell.print(found) + ", not " + wanted
+        return new IllegalStateException(path + " holds " + PolicyEngine.print(found) + ", not " + wanted
                 + "; a task needs that path to be free or to hold " + wanted);
     }
 
-    Cell cell() {
+    PolicyEngine cell() {
         return cell;
     }
 

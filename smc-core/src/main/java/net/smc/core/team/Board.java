@@ -33,7 +33,7 @@ final class Board {
         carriable = new int[roles.size()];
         free = fleet.size();
         for (int v = 0; v < fleet.size(); v++) {
-            for (int r = Bits.next(fleet.capable[v], 0); r >= 0; r = Bits.next(fleet.capable[v], r + 1)) {
+            for (int r = BitArrays.next(fleet.capable[v], 0); r >= 0; r = BitArrays.next(fleet.capable[v], r + 1)) {
                 freeCapable[r]++;
             }
         }
@@ -58,17 +58,17 @@ final class Board {
     }
 
     boolean holds(int v, int r) {
-        return Bits.get(held[v], r);
+        return BitArrays.get(held[v], r);
     }
 
     /** Anchors free vehicle {@code v} at role {@code r} (a primary role, or a secondary role on a vehicle of its own). */
     void take(int v, int r) {
         anchor[v] = r;
-        Bits.set(held[v], r);
+        BitArrays.set(held[v], r);
         count[r]++;
         free--;
         long[] capable = fleet.capable[v];
-        for (int t = Bits.next(capable, 0); t >= 0; t = Bits.next(capable, t + 1)) {
+        for (int t = BitArrays.next(capable, 0); t >= 0; t = BitArrays.next(capable, t + 1)) {
             freeCapable[t]--;
         }
         if (!roles.isSecondary(r)) {
@@ -90,12 +90,12 @@ final class Board {
             }
         }
         long[] capable = fleet.capable[v];
-        for (int t = Bits.next(capable, 0); t >= 0; t = Bits.next(capable, t + 1)) {
+        for (int t = BitArrays.next(capable, 0); t >= 0; t = BitArrays.next(capable, t + 1)) {
             freeCapable[t]++;
         }
         free++;
         count[r]--;
-        Bits.clear(held[v], r);
+        BitArrays.clear(held[v], r);
         anchor[v] = -1;
     }
 
@@ -104,7 +104,7 @@ final class Board {
         if (anchor[v] != roles.primaryOf[s] || !fleet.capable(v, s) || holds(v, s)) {
             return false;
         }
-        for (int t = Bits.next(held[v], 0); t >= 0; t = Bits.next(held[v], t + 1)) {
+        for (int t = BitArrays.next(held[v], 0); t >= 0; t = BitArrays.next(held[v], t + 1)) {
             if (!roles.share[s][t]) {
                 return false;
             }
@@ -114,7 +114,7 @@ final class Board {
 
     /** Lets {@code v} carry secondary role {@code s}; {@link #canCarry} must hold. */
     void carry(int v, int s) {
-        Bits.set(held[v], s);
+        BitArrays.set(held[v], s);
         count[s]++;
         carriable[s]--;
     }
@@ -122,7 +122,7 @@ final class Board {
     void uncarry(int v, int s) {
         carriable[s]++;
         count[s]--;
-        Bits.clear(held[v], s);
+        BitArrays.clear(held[v], s);
     }
 
     /** Whether every role has at least its minimal number of holders. */

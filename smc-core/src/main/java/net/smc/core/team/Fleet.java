@@ -53,8 +53,8 @@ final class Fleet {
         for (int r = 0; r < roles.size(); r++) {
             CapabilityRequirement requirement = roles.mission.roles().get(r).requirement();
             long[] need = new long[nameWords];
-            requirement.resources().forEach(s -> Bits.set(need, resourceBits.get(s)));
-            requirement.tasks().forEach(s -> Bits.set(need, taskBits.get(s)));
+            requirement.resources().forEach(s -> BitArrays.set(need, resourceBits.get(s)));
+            requirement.tasks().forEach(s -> BitArrays.set(need, taskBits.get(s)));
             needs[r] = need;
         }
         Map<Key, Integer> classes = new HashMap<>();
@@ -70,10 +70,10 @@ final class Fleet {
             capable[v] = new long[roles.words];
             for (int r = 0; r < roles.size(); r++) {
                 if (covers(has, needs[r])) {
-                    Bits.set(capable[v], r);
+                    BitArrays.set(capable[v], r);
                 }
             }
-            flexibility[v] = Bits.count(capable[v]);
+            flexibility[v] = BitArrays.count(capable[v]);
             classOf[v] = classes.computeIfAbsent(new Key(capable[v]), k -> classes.size());
         }
         classCount = classes.size();
@@ -94,7 +94,7 @@ final class Fleet {
 
     private static void mark(long[] has, Integer bit) {
         if (bit != null) {
-            Bits.set(has, bit);
+            BitArrays.set(has, bit);
         }
     }
 
@@ -117,7 +117,7 @@ final class Fleet {
     }
 
     boolean capable(int v, int r) {
-        return Bits.get(capable[v], r);
+        return BitArrays.get(capable[v], r);
     }
 
     /** The vehicle with id {@code id}, or -1. */

@@ -6,8 +6,8 @@ package net.smc.core.transport;
  * every method that takes one says so in its name.
  *
  * <p>Milliseconds because the protocols' times (heartbeats, failure timeouts, radio latency) are
- * milliseconds to minutes, and because the policy engine's clock ({@code net.smc.policy.Cell}) is
- * milliseconds too: {@code Cell.builder().clock(clock::nowMillis)} hands a cell's clock to it.
+ * milliseconds to minutes, and because the policy engine's clock ({@code net.smc.policy.PolicyEngine}) is
+ * milliseconds too: {@code PolicyEngine.builder().clock(clock::nowMillis)} hands a cell's clock to it.
  *
  * <p>The value never goes backwards. In simulation it is virtual time ({@code SimulationScheduler},
  * which starts where its creator says, 0 by default); in deployment it is the wall clock read once

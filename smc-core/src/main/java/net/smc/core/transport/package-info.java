@@ -11,8 +11,8 @@
  * real-time clock and scheduler of a deployed cell, and the serial executor that is its thread) and
  * {@code transport.udp} (Netty UDP, the only package that uses Netty).
  *
- * <p>{@link net.smc.core.transport.StatusResponder} wraps a cell's transport to answer read-only status
- * queries from outside (sent by {@link net.smc.core.transport.StatusClient}, as {@code smc status} does).
+ * <p>{@link net.smc.core.transport.udp.StatusResponder} wraps a cell's transport to answer read-only status
+ * queries from outside (sent by {@link net.smc.core.transport.udp.StatusClient}, as {@code smc status} does).
  *
  * <p>A simulated pair of cells, in six lines ({@code heard} ends as {@code ["127.0.0.1:4001 says hello"]}):
  * <pre>{@code

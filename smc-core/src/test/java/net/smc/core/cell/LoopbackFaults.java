@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import net.smc.core.host.CellHost;
 import java.util.Collection;
 import java.util.Map;
 import java.util.Set;

@@ -4,7 +4,7 @@ import java.nio.file.Path;
 
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /** The shipped missions and policy repository, for the team tests. */
 public final class Missions {

@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import net.smc.core.cell.sim.SimVehicle;
 import net.smc.core.cell.sim.TeamSimulation;
 import net.smc.core.mission.Mission;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import org.junit.jupiter.api.Test;
 
 /** The README's "Teams of cells" example, as written there. */

@@ -18,7 +18,7 @@ import net.smc.core.role.TaskProvider;
 import net.smc.core.task.Task;
 import net.smc.core.task.TaskInterface;
 import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import org.junit.jupiter.api.Test;
 
 /** A role's tasks come from its mission's {@code <requires><task>}: assignment starts them, withdrawal stops them. */

@@ -21,9 +21,9 @@ import net.smc.core.task.StateHandover;
 import net.smc.core.task.Task;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
-import net.smc.policy.AuthMode;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.runtime.PArray;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import net.smc.core.host.CellHost;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.DynamicTest.dynamicTest;

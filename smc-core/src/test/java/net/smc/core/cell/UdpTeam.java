@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import net.smc.core.host.CellHost;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.IOException;

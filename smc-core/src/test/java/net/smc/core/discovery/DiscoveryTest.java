@@ -10,8 +10,8 @@ import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
 import net.smc.core.capability.CapabilitySummary;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import org.junit.jupiter.api.Test;
 
@@ -19,9 +19,9 @@ import org.junit.jupiter.api.Test;
 class DiscoveryTest {
     private final List<String> requests = new ArrayList<>();
     private final List<Diagnostic> errors = new ArrayList<>();
-    private final Discovery discovery = new Discovery(CredentialCheck.sharedToken("team7"),
+    private final DiscoveryObject discovery = new DiscoveryObject(CredentialCheck.sharedToken("team7"),
             (uav, role) -> requests.add(uav + " as " + role));
-    private final Cell cell = Cell.builder().errors(errors::add).build();
+    private final PolicyEngine cell = PolicyEngine.builder().errors(errors::add).build();
 
     DiscoveryTest() {
         discovery.install(cell);

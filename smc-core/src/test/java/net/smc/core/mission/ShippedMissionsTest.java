@@ -15,7 +15,7 @@ import javax.xml.transform.stream.StreamSource;
 import javax.xml.validation.Schema;
 import javax.xml.validation.SchemaFactory;
 import net.smc.core.capability.CapabilityRequirement;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;

@@ -3,7 +3,7 @@ package net.smc.core.role;
 import java.util.ArrayList;
 import java.util.List;
 import net.smc.core.task.Task;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 
 /** A test task: records where it was sent and how often it started and stopped. */
 class Explorer extends Task {

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.math.BigDecimal;
 import java.util.List;
 import net.smc.core.role.ExternalCallException.Kind;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -84,7 +84,7 @@ class ExternalGatewayTest {
     void callerActsAsItsPeerSubject() {
         gateway.invoke(commander, "surveyor", "goTo:", 5);
 
-        assertEquals("<Peer root/role/surveyor/peers/commander/c7>", Cell.print(f.cell.resolve("root/role/surveyor/peers/commander/c7")));
+        assertEquals("<Peer root/role/surveyor/peers/commander/c7>", PolicyEngine.print(f.cell.resolve("root/role/surveyor/peers/commander/c7")));
     }
 
     @Test
@@ -136,7 +136,7 @@ class ExternalGatewayTest {
 
         Object answer = gateway.invoke(commander, "surveyor", "policies");
 
-        assertEquals("[saveBattery, alarms]", Cell.print(answer));
+        assertEquals("[saveBattery, alarms]", PolicyEngine.print(answer));
     }
 
     @Test

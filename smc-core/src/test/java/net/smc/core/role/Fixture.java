@@ -8,10 +8,10 @@ import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.AuthorisationPolicy;
 import net.smc.policy.runtime.Domain;
@@ -27,7 +27,7 @@ final class Fixture {
     final List<String> out = new ArrayList<>();
     final List<Diagnostic> errors = new ArrayList<>();
     final List<String> reassigned = new ArrayList<>();
-    final Cell cell;
+    final PolicyEngine cell;
     final RoleManager roles;
 
     Fixture() {
@@ -36,7 +36,7 @@ final class Fixture {
 
     /** A cell whose boot unit also runs {@code moreBoot}. */
     Fixture(PolicyRepository repository, String moreBoot) {
-        Cell.Builder builder = Cell.builder().output(out::add).errors(errors::add).auth(AuthMode.DENY);
+        PolicyEngine.Builder builder = PolicyEngine.builder().output(out::add).errors(errors::add).auth(AuthMode.DENY);
         if (repository != null) {
             builder.repository(repository);
         }
@@ -96,7 +96,7 @@ final class Fixture {
                     out.append(p.active() ? " active" : " inactive");
                 }
             } else {
-                out.append(Cell.print(v));
+                out.append(PolicyEngine.print(v));
             }
             out.append('\n');
             if (v instanceof Domain child) {

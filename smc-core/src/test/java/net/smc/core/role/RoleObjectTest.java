@@ -59,10 +59,10 @@ class RoleObjectTest {
         loadCommander();
 
         assertEquals("commander", f.run("root/role/commander name"));
-        assertEquals("[aggregator, surveyor]", net.smc.policy.Cell.print(f.run("root/role/commander manages")));
-        assertEquals("[a]", net.smc.policy.Cell.print(f.run("root/role/commander policies")));
-        assertEquals("[Explorer]", net.smc.policy.Cell.print(f.run("root/role/commander tasks")));
-        assertEquals("<Role root/role/commander>", net.smc.policy.Cell.print(f.run("root/role/commander")));
+        assertEquals("[aggregator, surveyor]", net.smc.policy.PolicyEngine.print(f.run("root/role/commander manages")));
+        assertEquals("[a]", net.smc.policy.PolicyEngine.print(f.run("root/role/commander policies")));
+        assertEquals("[Explorer]", net.smc.policy.PolicyEngine.print(f.run("root/role/commander tasks")));
+        assertEquals("<Role root/role/commander>", net.smc.policy.PolicyEngine.print(f.run("root/role/commander")));
     }
 
     @Test

@@ -159,7 +159,7 @@ class CredentialTest {
         Credential c = Credential.issue(claims("uav-1", MISSION), team.authority);
         SigningKey other = SigningKey.generate(team.random);
 
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Identity(other, c));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new SigningIdentity(other, c));
 
         assertTrue(e.getMessage().startsWith("credential of 'uav-1' is for key " + vehicle.verificationKey().id()), e.getMessage());
     }

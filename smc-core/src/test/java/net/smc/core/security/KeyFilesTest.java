@@ -26,7 +26,7 @@ class KeyFilesTest {
 
     @Test
     void publicKey_andCredential_roundTripThroughFiles() throws Exception {
-        Identity id = team.identity("uav-1");
+        SigningIdentity id = team.identity("uav-1");
         Path pub = Files.writeString(dir.resolve("uav-1.pub"), KeyFiles.publicKeyText(id.key().verificationKey(), "uav-1"));
         Path cred = Files.writeString(dir.resolve("uav-1.cred"), KeyFiles.credentialText(id.credential(), "uav-1"));
 
@@ -95,7 +95,7 @@ class KeyFilesTest {
 
     @Test
     void corruptCredential_isRefused_namingTheFileAndTheField() {
-        Identity id = team.identity("uav-1");
+        SigningIdentity id = team.identity("uav-1");
         byte[] encoded = id.credential().encode();
         encoded[0] = 9;
         String text = "smc-credential v1\n" + java.util.Base64.getEncoder().encodeToString(encoded) + "\n";

@@ -36,7 +36,7 @@ class SecureCommunicationTest {
         final SecureTransport secure;
         final List<Envelope> received = new ArrayList<>();
 
-        Vehicle(Identity identity, int port) {
+        Vehicle(SigningIdentity identity, int port) {
             secure = new SecureTransport(network.attach(Address.loopback(port)),
                     team.endpoint(identity, scheduler));
             MessageRouter router = new MessageRouter();

@@ -35,11 +35,11 @@ class SecureTransportTest {
             this(team.identity(id), port);
         }
 
-        Cell(Identity identity, int port) {
+        Cell(SigningIdentity identity, int port) {
             this(identity, network.attach(Address.loopback(port)));
         }
 
-        Cell(Identity identity, Transport raw) {
+        Cell(SigningIdentity identity, Transport raw) {
             transport = new SecureTransport(raw, team.endpoint(identity, scheduler));
             transport.setAuthenticatedReceiver((sender, from, protection, payload) -> {
                 String text = new String(payload, StandardCharsets.UTF_8);
@@ -157,7 +157,7 @@ class SecureTransportTest {
     @Test
     void restartedVehicle_getsANewSessionFromTheFirstMacItCannotRead() {
         Cell commander = new Cell("cmdr", 4001);
-        Identity vehicleIdentity = team.identity("uav-1");
+        SigningIdentity vehicleIdentity = team.identity("uav-1");
         Cell vehicle = new Cell(vehicleIdentity, 4002);
         commander.transport.broadcast(bytes("DISCOVERY"));
         settle();

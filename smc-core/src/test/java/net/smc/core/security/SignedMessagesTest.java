@@ -82,7 +82,7 @@ class SignedMessagesTest {
         Credential genuine = commander.identity.credential();
         Credential forged = new Credential(new Claims("cmdr", forgerKey.verificationKey(), MISSION, T0 - HOUR, T0 + HOUR),
                 genuine.authority(), genuine.signature());
-        SecureEndpoint forger = SecureEndpoint.builder(new Identity(forgerKey, forged), team.trust, team.clock).build();
+        SecureEndpoint forger = SecureEndpoint.builder(new SigningIdentity(forgerKey, forged), team.trust, team.clock).build();
 
         Unwrapped.Rejected r = refused(forger.wrapSigned(discovery), Rejection.BAD_SIGNATURE);
 

@@ -38,24 +38,24 @@ final class Team {
     }
 
     /** A vehicle with a new key and a credential for the mission, valid from an hour before T0 to a day after. */
-    Identity identity(String id) {
+    SigningIdentity identity(String id) {
         return identity(id, T0 - HOUR, T0 + 24 * HOUR, MISSION, authority);
     }
 
-    Identity identity(String id, long notBefore, long expires, String mission, SigningKey issuer) {
+    SigningIdentity identity(String id, long notBefore, long expires, String mission, SigningKey issuer) {
         SigningKey key = SigningKey.generate(random);
-        return new Identity(key, Credential.issue(new Claims(id, key.verificationKey(), mission, notBefore, expires), issuer));
+        return new SigningIdentity(key, Credential.issue(new Claims(id, key.verificationKey(), mission, notBefore, expires), issuer));
     }
 
     SecureEndpoint endpoint(String id) {
         return endpoint(identity(id));
     }
 
-    SecureEndpoint endpoint(Identity identity) {
+    SecureEndpoint endpoint(SigningIdentity identity) {
         return endpoint(identity, clock);
     }
 
-    SecureEndpoint endpoint(Identity identity, Clock clock) {
+    SecureEndpoint endpoint(SigningIdentity identity, Clock clock) {
         return SecureEndpoint.builder(identity, trust, clock).random(random).build();
     }
 
@@ -83,8 +83,8 @@ final class Team {
      */
     static String state(SecureEndpoint e) {
         List<String> parts = new ArrayList<>();
-        for (Map.Entry<String, Peer> entry : new java.util.TreeMap<>(e.peers).entrySet()) {
-            Peer p = entry.getValue();
+        for (Map.Entry<String, PeerState> entry : new java.util.TreeMap<>(e.peers).entrySet()) {
+            PeerState p = entry.getValue();
             parts.add(entry.getKey() + "{cred=" + p.credential + ", signed=" + p.signedWindow
                     + ", eph=" + System.identityHashCode(p.ephemeral) + ", peerEph=" + java.util.Arrays.toString(p.peerEphemeral)
                     + ", lastHello=" + p.lastHelloCounter + ", helloSent=" + p.helloSentMillis

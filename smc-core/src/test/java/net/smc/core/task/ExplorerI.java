@@ -1,6 +1,6 @@
 package net.smc.core.task;
 
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 
 /** The example task interface of the paper's section IV-B: operations, and events marked {@link TaskEvent}. */
 @TaskInterface("Explorer")

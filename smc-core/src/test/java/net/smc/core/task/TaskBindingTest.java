@@ -9,8 +9,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
@@ -38,12 +38,12 @@ class TaskBindingTest {
 
     private final List<String> output = new ArrayList<>();
     private final List<Diagnostic> errors = new ArrayList<>();
-    private Cell cell;
+    private PolicyEngine cell;
     private Explorer explorer;
 
     @BeforeEach
     void newCell() {
-        cell = Cell.builder().output(output::add).errors(errors::add).build();
+        cell = PolicyEngine.builder().output(output::add).errors(errors::add).build();
         explorer = new Explorer();
     }
 
@@ -113,7 +113,7 @@ class TaskBindingTest {
         assertSame(explorer.managed(), cell.resolve("root/task/Explorer"));
         run("root/task/Explorer explore: \"cellar\"");
         assertEquals("cellar", explorer.area);
-        assertEquals("0.0,0.0", Cell.print(cell.run("t", "root/task/Explorer position").value()));
+        assertEquals("0.0,0.0", PolicyEngine.print(cell.run("t", "root/task/Explorer position").value()));
     }
 
     @Test
@@ -121,10 +121,10 @@ class TaskBindingTest {
         explorer.bind(cell);
         run("root/task/Explorer start");
         assertTrue(explorer.isRunning());
-        assertEquals("true", Cell.print(cell.run("t", "root/task/Explorer isRunning").value()));
+        assertEquals("true", PolicyEngine.print(cell.run("t", "root/task/Explorer isRunning").value()));
         run("root/task/Explorer stop");
         assertFalse(explorer.isRunning());
-        assertEquals("Explorer", Cell.print(cell.run("t", "root/task/Explorer name").value()));
+        assertEquals("Explorer", PolicyEngine.print(cell.run("t", "root/task/Explorer name").value()));
     }
 
     @Test
@@ -162,7 +162,7 @@ class TaskBindingTest {
     @Test
     void bind_toASecondCell_failsUntilUnbound() throws Exception {
         explorer.bind(cell);
-        Cell other = Cell.builder().build();
+        PolicyEngine other = PolicyEngine.builder().build();
         IllegalStateException e = assertThrows(IllegalStateException.class, () -> explorer.bind(other));
         assertEquals("task Explorer is already bound to another cell; unbind it first", e.getMessage());
         explorer.unbind();

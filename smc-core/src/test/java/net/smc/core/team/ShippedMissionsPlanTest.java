@@ -11,7 +11,7 @@ import java.util.Set;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import org.junit.jupiter.api.Test;
 
 /** The missions under missions/, loaded against the real repository, planned for the paper's teams. */

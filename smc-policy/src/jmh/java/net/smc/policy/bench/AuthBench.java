@@ -5,9 +5,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.runtime.AuthorisationPolicy;
 import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.EventTemplate;
@@ -57,7 +57,7 @@ public class AuthBench {
     int toggleEvery;
 
     private final List<Diagnostic> errors = Bench.errors();
-    private Cell cell;
+    private PolicyEngine cell;
     private EventTemplate alarm;
     private Domain target;
     private AuthorisationPolicy allow;

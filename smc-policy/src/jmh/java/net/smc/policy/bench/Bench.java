@@ -2,9 +2,9 @@ package net.smc.policy.bench;
 
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 
 /** Small helpers shared by the benchmarks: cells that collect their errors, checks, generated texts. */
@@ -13,12 +13,12 @@ final class Bench {
     }
 
     /** A cell with the given authorisation mode whose errors are collected in {@code errors}. */
-    static Cell cell(AuthMode mode, List<Diagnostic> errors) {
-        return Cell.builder().auth(mode).errors(errors::add).build();
+    static PolicyEngine cell(AuthMode mode, List<Diagnostic> errors) {
+        return PolicyEngine.builder().auth(mode).errors(errors::add).build();
     }
 
     /** Runs a unit that must succeed. */
-    static RunResult run(Cell cell, String name, String text, List<Diagnostic> errors) {
+    static RunResult run(PolicyEngine cell, String name, String text, List<Diagnostic> errors) {
         RunResult result = cell.run(name, text);
         check(result.ok() && errors.isEmpty(), name + ": " + result.status() + " " + errors);
         return result;

@@ -3,9 +3,9 @@ package net.smc.policy.bench;
 import java.math.BigDecimal;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.PHash;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -51,7 +51,7 @@ public class EventBench {
     int level;
 
     private final List<Diagnostic> errors = Bench.errors();
-    private Cell cell;
+    private PolicyEngine cell;
     private EventTemplate alarm;
     private BigDecimal value;
     private PHash store;
@@ -60,7 +60,7 @@ public class EventBench {
     public void setUp() {
         cell = Bench.cell(AuthMode.OFF, errors);
         // The other policies first, so the measured one is attached last.
-        Cell othersCell = othersElsewhere ? Bench.cell(AuthMode.OFF, errors) : cell;
+        PolicyEngine othersCell = othersElsewhere ? Bench.cell(AuthMode.OFF, errors) : cell;
         Bench.run(othersCell, "others", "store := #() asHash. root at: \"others\" put: store.\n"
                 + Bench.templates("o", otherPolicies) + Bench.policies("o", "o", otherPolicies, "o"), errors);
         Bench.run(cell, "boot", """

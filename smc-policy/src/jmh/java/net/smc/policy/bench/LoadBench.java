@@ -3,9 +3,9 @@ package net.smc.policy.bench;
 import java.math.BigDecimal;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.lang.Unit;
 import net.smc.policy.runtime.Domain;
@@ -44,7 +44,7 @@ public class LoadBench {
     private final List<Diagnostic> errors = Bench.errors();
     private String templates;
     private String text;
-    private Cell cell;
+    private PolicyEngine cell;
 
     @Setup(Level.Trial)
     public void texts() {

@@ -3,9 +3,9 @@ package net.smc.policy.bench;
 import java.math.BigDecimal;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.PHash;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -42,7 +42,7 @@ public class LoopBench {
     String body;
 
     private final List<Diagnostic> errors = Bench.errors();
-    private Cell cell;
+    private PolicyEngine cell;
     private String text;
 
     @Setup(Level.Trial)

@@ -8,9 +8,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import javax.management.ObjectName;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.runtime.Domain;
 
 /**
@@ -47,11 +47,11 @@ public final class MemoryReport {
         }
     }
 
-    /** 1,000 idle cells ({@code Cell.builder().build()}). */
+    /** 1,000 idle cells ({@code PolicyEngine.builder().build()}). */
     private static Object idleCells() {
-        Cell[] cells = new Cell[N];
+        PolicyEngine[] cells = new PolicyEngine[N];
         for (int i = 0; i < N; i++) {
-            cells[i] = Cell.builder().build();
+            cells[i] = PolicyEngine.builder().build();
         }
         return cells;
     }
@@ -63,7 +63,7 @@ public final class MemoryReport {
     /** Setup (not counted): a cell. Counted: 1,000 event templates run into it. */
     private static Supplier<Object> templates() {
         List<Diagnostic> errors = Bench.errors();
-        Cell cell = Bench.cell(AuthMode.OFF, errors);
+        PolicyEngine cell = Bench.cell(AuthMode.OFF, errors);
         return () -> {
             Bench.run(cell, "templates", TEMPLATES, errors);
             check(cell, "root/event");
@@ -74,7 +74,7 @@ public final class MemoryReport {
     /** Setup (not counted): a cell with 1,000 templates. Counted: 1,000 obligation policies loaded into it. */
     private static Supplier<Object> policies() {
         List<Diagnostic> errors = Bench.errors();
-        Cell cell = Bench.cell(AuthMode.OFF, errors);
+        PolicyEngine cell = Bench.cell(AuthMode.OFF, errors);
         Bench.run(cell, "templates", TEMPLATES, errors);
         return () -> {
             Bench.run(cell, "policies", POLICIES, errors);
@@ -126,7 +126,7 @@ public final class MemoryReport {
         return String.format("%,d B (histogram %,d B)", (usedAfter - usedBefore) / N, live / N);
     }
 
-    private static void check(Cell cell, String domain) {
+    private static void check(PolicyEngine cell, String domain) {
         Bench.check(((Domain) cell.resolve(domain)).entries().size() == N, domain + " size");
     }
 

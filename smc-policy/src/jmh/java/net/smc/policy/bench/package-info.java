@@ -1,5 +1,5 @@
 /**
- * JMH benchmarks of the PonderTalk policy engine ({@link net.smc.policy.Cell}), one class per
+ * JMH benchmarks of the PonderTalk policy engine ({@link net.smc.policy.PolicyEngine}), one class per
  * topic: event delivery ({@link net.smc.policy.bench.EventBench}), the interpreter's inner loop
  * ({@link net.smc.policy.bench.LoopBench}), loading policies ({@link net.smc.policy.bench.LoadBench}),
  * authorisation ({@link net.smc.policy.bench.AuthBench}); plus {@link net.smc.policy.bench.MemoryReport},

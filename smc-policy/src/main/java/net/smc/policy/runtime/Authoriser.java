@@ -1,11 +1,13 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.PonderError;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.lang.SourcePos;
 
 /**

@@ -1,5 +1,8 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import java.util.List;
 import java.util.Map;
 import net.smc.policy.lang.SourcePos;

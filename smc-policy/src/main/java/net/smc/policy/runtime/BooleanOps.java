@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.Op;
 /** Operations of booleans. */
 final class BooleanOps {
     private BooleanOps() {

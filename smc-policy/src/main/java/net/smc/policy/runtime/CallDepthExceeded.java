@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
 /**
  * The call depth limit was hit: a block recursion or an event loop ran away. Inside a chain of
  * policies fired by events, no policy but the outermost one contains it, so a loop that raises

@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Managed;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -13,11 +15,11 @@ import java.util.Optional;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.Limits;
-import net.smc.policy.PolicyRepository;
-import net.smc.policy.TimerScheduler;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.Limits;
+import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.TimerScheduler;
 import net.smc.policy.stdlib.StandardObjects;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
@@ -30,7 +32,7 @@ import net.smc.policy.lang.Unit;
  * The state of one self-managed cell's policy engine: the root domain, the registry of loadable
  * classes, event delivery, authorisation, and the injected output, error reporter, clock and
  * random source. Not thread-safe: a cell runs on one logical thread. Embedders use
- * {@link net.smc.policy.Cell}.
+ * {@link net.smc.policy.PolicyEngine}.
  */
 public final class CellRuntime {
     /** Configuration given by the embedding application. */
@@ -361,7 +363,7 @@ public final class CellRuntime {
      */
     public Object run(Unit unit, Variables variables) {
         Execution ex = newExecution();
-        Frame frame = new Frame(ex, variables == null ? Map.of() : variables.values);
+        VariableFrame frame = new VariableFrame(ex, variables == null ? Map.of() : variables.values);
         try {
             return interpreter.run(interpreter.compile(unit.statements()), frame);
         } catch (PonderError e) {
@@ -386,7 +388,7 @@ public final class CellRuntime {
             throw new PonderError("cannot run '" + source + "': " + unit.errors().size() + " syntax error"
                     + (unit.errors().size() == 1 ? "" : "s"));
         }
-        Frame frame = new Frame(ex, Map.of());
+        VariableFrame frame = new VariableFrame(ex, Map.of());
         return interpreter.run(interpreter.compile(unit.statements()), frame);
     }
 

@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.PonderError;
 import java.math.BigDecimal;
 import java.util.Collection;
 import java.util.Map;

@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import java.time.Instant;
 
 /** A point in time, loadable as {@code root load: "DateTime"}; {@code create} reads the cell's clock. */

@@ -1,5 +1,9 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import java.math.BigDecimal;
 
 /** The error object an {@code onError:} handler receives. */

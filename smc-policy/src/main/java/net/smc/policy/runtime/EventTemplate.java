@@ -1,5 +1,8 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import java.util.List;
 
 /**

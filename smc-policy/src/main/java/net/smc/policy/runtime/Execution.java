@@ -1,6 +1,6 @@
 package net.smc.policy.runtime;
 
-import net.smc.policy.Limits;
+import net.smc.policy.api.Limits;
 
 /**
  * The state of one run: a unit, or an event raised from Java, with everything it triggers. It

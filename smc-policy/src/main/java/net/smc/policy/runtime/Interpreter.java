@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.PonderError;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -25,7 +27,7 @@ public final class Interpreter {
 
     /** Executable code: one node of the compiled tree. */
     abstract static class Code {
-        abstract Object exec(Frame f);
+        abstract Object exec(VariableFrame f);
     }
 
     /** Compiled statements of a unit. */
@@ -109,7 +111,7 @@ public final class Interpreter {
     }
 
     /** Runs compiled statements in a frame; answers the last statement's value. */
-    Object run(Compiled unit, Frame frame) {
+    Object run(Compiled unit, VariableFrame frame) {
         Object value = Nil.NIL;
         for (Code statement : unit.statements) {
             value = statement.exec(frame);
@@ -146,7 +148,7 @@ public final class Interpreter {
         }
         ex.depth++;
         try {
-            Frame frame = new Frame(ex, code.free, block.captured, code.params, args, block.scope);
+            VariableFrame frame = new VariableFrame(ex, code.free, block.captured, code.params, args, block.scope);
             for (int i = 0; i < extraNames.length; i++) {
                 frame.set(extraNames[i], extraValues[i]);
             }
@@ -206,7 +208,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             return value;
         }
     }
@@ -230,10 +232,10 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             if (!absolute) {
                 Object v = f.lookup(first);
-                if (v == null && first == Frame.VARIABLES) {
+                if (v == null && first == VariableFrame.VARIABLES) {
                     v = f.variables();
                 }
                 if (v != null) {
@@ -266,7 +268,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             Object v = value.exec(f);
             f.set(name, v);
             return v;
@@ -281,7 +283,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             PArray array = new PArray();
             for (Code element : elements) {
                 array.add(element.exec(f));
@@ -303,13 +305,13 @@ public final class Interpreter {
         BlockCode(String[] params, String[] free, Code[] body, SourcePos pos) {
             this.params = params;
             this.free = free;
-            this.readsVariables = List.of(free).contains(Frame.VARIABLES);
+            this.readsVariables = List.of(free).contains(VariableFrame.VARIABLES);
             this.body = body;
             this.pos = pos;
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             return new Block(this, f.capture(free), readsVariables ? f.snapshot() : Map.of());
         }
     }
@@ -333,11 +335,11 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             return sendTo(f, receiver.exec(f));
         }
 
-        Object sendTo(Frame f, Object target) {
+        Object sendTo(VariableFrame f, Object target) {
             Object[] values = new Object[args.length];
             for (int i = 0; i < values.length; i++) {
                 values[i] = args[i].exec(f);
@@ -372,7 +374,7 @@ public final class Interpreter {
         }
 
         @Override
-        Object exec(Frame f) {
+        Object exec(VariableFrame f) {
             Object target = receiver.exec(f);
             Object value = target;
             for (SendCode[] chain : chains) {

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Op;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;

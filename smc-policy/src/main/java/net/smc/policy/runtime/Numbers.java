@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
 import java.math.BigDecimal;
 import java.math.RoundingMode;
 

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Op;
 /** The operations every object (but nil) answers. */
 final class ObjectOps {
     private ObjectOps() {

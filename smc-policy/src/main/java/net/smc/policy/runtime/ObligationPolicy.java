@@ -1,8 +1,11 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.lang.SourcePos;
 
 /**

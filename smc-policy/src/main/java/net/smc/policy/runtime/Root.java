@@ -1,6 +1,9 @@
 package net.smc.policy.runtime;
 
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.lang.IncludeResolver;
 
 /**

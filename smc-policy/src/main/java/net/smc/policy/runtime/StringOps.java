@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.PonderError;
+import net.smc.policy.api.Op;
 import java.math.BigDecimal;
 
 /** Operations of strings. */

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
 import java.math.BigDecimal;
 import java.util.Collections;
 import java.util.IdentityHashMap;

@@ -4,11 +4,11 @@ import java.util.ArrayList;
 import java.util.List;
 import net.smc.policy.runtime.Block;
 import net.smc.policy.runtime.CallContext;
-import net.smc.policy.runtime.Managed;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import net.smc.policy.runtime.PArray;
 import net.smc.policy.runtime.PHash;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 
 /**
  * Ponder2's comma-separated table: {@code create: "file.csv"} reads the file (found as

@@ -1,8 +1,8 @@
 package net.smc.policy.stdlib;
 
-import net.smc.policy.runtime.Managed;
-import net.smc.policy.runtime.Op;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
+import net.smc.policy.api.PonderError;
 import net.smc.policy.runtime.Values;
 
 /**

@@ -2,9 +2,9 @@ package net.smc.policy.stdlib;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
-import net.smc.policy.runtime.Managed;
-import net.smc.policy.runtime.Op;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
+import net.smc.policy.api.PonderError;
 
 /**
  * Ponder2's example managed object: a store of values by name. {@code at: name put: value}

@@ -6,9 +6,9 @@ import net.smc.policy.lang.SourcePos;
 import net.smc.policy.runtime.CallContext;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.EventTemplate;
-import net.smc.policy.runtime.Managed;
-import net.smc.policy.runtime.Op;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
+import net.smc.policy.api.PonderError;
 
 /**
  * Ponder2's multiple timer: each {@code tick:event:} (once) or {@code repeat:event:} (periodic)

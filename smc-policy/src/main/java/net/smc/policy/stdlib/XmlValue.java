@@ -14,11 +14,11 @@ import javax.xml.transform.stream.StreamResult;
 import javax.xml.xpath.XPathConstants;
 import javax.xml.xpath.XPathExpressionException;
 import javax.xml.xpath.XPathFactory;
-import net.smc.policy.runtime.Managed;
+import net.smc.policy.api.Managed;
 import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 import net.smc.policy.runtime.PArray;
-import net.smc.policy.runtime.PonderError;
+import net.smc.policy.api.PonderError;
 import org.w3c.dom.Document;
 import org.w3c.dom.Node;
 import org.w3c.dom.NodeList;
@@ -94,7 +94,7 @@ final class XmlValue extends ManagedObject {
     @Op("xpathNode:")
     Object xpathNode(String expression) {
         Node found = (Node) query(expression, XPathConstants.NODE);
-        return found == null ? net.smc.policy.runtime.Nil.NIL : new XmlValue(found);
+        return found == null ? net.smc.policy.api.Nil.NIL : new XmlValue(found);
     }
 
     @Op("xpathNodeSet:")

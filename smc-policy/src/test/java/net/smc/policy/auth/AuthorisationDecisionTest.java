@@ -6,9 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
-import net.smc.policy.AuthMode;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.api.AuthMode;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.Domain;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -273,7 +273,7 @@ class AuthorisationDecisionTest {
     @MethodSource("rows")
     void decision(Row row) {
         List<Diagnostic> reported = new ArrayList<>();
-        Cell cell = Cell.builder().auth(row.mode()).errors(reported::add).build();
+        PolicyEngine cell = PolicyEngine.builder().auth(row.mode()).errors(reported::add).build();
         mustRun(cell, "setup.p2", SETUP, reported);
         Domain target = assertInstanceOf(Domain.class, cell.resolve("root/t1/t2/T"));
         mustRun(cell, "policies.p2", NAMES + row.policies(), reported);
@@ -292,12 +292,12 @@ class AuthorisationDecisionTest {
         List<String> messages = reported.stream().map(Diagnostic::message).toList();
         assertEquals(row.stored(), stored != null, row.name() + ": whether the put happened; reported " + messages);
         if (row.stored()) {
-            assertEquals(String.valueOf(row.value()), Cell.print(stored), row.name() + ": the stored value");
+            assertEquals(String.valueOf(row.value()), PolicyEngine.print(stored), row.name() + ": the stored value");
         }
         assertEquals(row.errors(), messages, row.name() + ": reported errors");
     }
 
-    private static void mustRun(Cell cell, String name, String text, List<Diagnostic> reported) {
+    private static void mustRun(PolicyEngine cell, String name, String text, List<Diagnostic> reported) {
         RunResult result = cell.run(name, text);
         assertEquals(List.of(), reported, "errors of " + name);
         assertEquals(RunResult.Status.OK, result.status(), name);

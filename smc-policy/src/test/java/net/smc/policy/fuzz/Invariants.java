@@ -6,9 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
-import net.smc.policy.Limits;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.Limits;
 import net.smc.policy.RunResult;
 import net.smc.policy.lang.Lexer;
 import net.smc.policy.lang.Parser;
@@ -72,7 +72,7 @@ final class Invariants {
      */
     static List<Diagnostic> runInCell(String text) {
         List<Diagnostic> reported = new ArrayList<>();
-        Cell cell = Cell.builder().limits(SMALL).errors(reported::add).output(line -> { }).build();
+        PolicyEngine cell = PolicyEngine.builder().limits(SMALL).errors(reported::add).output(line -> { }).build();
         RunResult result = cell.run(SOURCE, text);
         assertNotNull(result);
         for (Diagnostic d : reported) {
@@ -85,7 +85,7 @@ final class Invariants {
         if (result.status() != RunResult.Status.EXITED) {
             RunResult after = cell.run("after.p2", "1 + 1");
             assertEquals(RunResult.Status.OK, after.status(), "the cell still runs units");
-            assertEquals("2", Cell.print(after.value()));
+            assertEquals("2", PolicyEngine.print(after.value()));
         }
         return reported;
     }

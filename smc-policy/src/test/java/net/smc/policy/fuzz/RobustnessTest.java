@@ -13,8 +13,8 @@ import java.util.List;
 import java.util.Random;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.lang.Lexer;
 import net.smc.policy.lang.Parser;
@@ -42,7 +42,7 @@ class RobustnessTest {
 
     private final List<Diagnostic> reported = new ArrayList<>();
     private final List<String> output = new ArrayList<>();
-    private final Cell cell = Cell.builder().limits(Invariants.SMALL).errors(reported::add).output(output::add).build();
+    private final PolicyEngine cell = PolicyEngine.builder().limits(Invariants.SMALL).errors(reported::add).output(output::add).build();
 
     private List<String> messages() {
         return reported.stream().map(Diagnostic::message).toList();
@@ -162,7 +162,7 @@ class RobustnessTest {
     @Test
     void tenMegabyteStringLiteral_roundTripsItsLength() {
         int length = 10 * 1024 * 1024;
-        Cell.Session session = cell.session();
+        PolicyEngine.Session session = cell.session();
         RunResult result = bounded(
                 () -> session.run("big.p2", "x := \"" + "a".repeat(length) + "\"."));
         assertEquals(RunResult.Status.OK, result.status(), messages().toString());
@@ -190,9 +190,9 @@ class RobustnessTest {
 
     /** Runs a long flat chain of sends, which the parser accepts without any nesting. */
     private RunResult runChain(String text) {
-        Cell fresh = Cell.builder().errors(reported::add).build();
+        PolicyEngine fresh = PolicyEngine.builder().errors(reported::add).build();
         return bounded(() -> assertDoesNotThrow(() -> fresh.run("chain.p2", text),
-                "Cell.run must report, not throw, for a chain of " + text.length() + " characters"));
+                "PolicyEngine.run must report, not throw, for a chain of " + text.length() + " characters"));
     }
 
     @Test
@@ -200,7 +200,7 @@ class RobustnessTest {
         RunResult result = runChain("1" + " + 1".repeat(250_000));
         assertTrue(result.ok() || !reported.isEmpty(), "either a value or a reported error");
         if (result.ok()) {
-            assertEquals("250001", Cell.print(result.value()));
+            assertEquals("250001", PolicyEngine.print(result.value()));
         }
     }
 
@@ -346,7 +346,7 @@ class RobustnessTest {
         reported.clear();
         RunResult result = run("c := #(0). 1000 do: [:i | c at: 0 put: (c at: 0) + 1]. c at: 0");
         assertEquals(RunResult.Status.OK, result.status(), messages().toString());
-        assertEquals("1000", Cell.print(result.value()));
+        assertEquals("1000", PolicyEngine.print(result.value()));
     }
 
     @Test

@@ -10,8 +10,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -22,7 +22,7 @@ class SourceFilesTest {
 
     private final List<Diagnostic> errors = new ArrayList<>();
     private final List<String> output = new ArrayList<>();
-    private final Cell cell = Cell.builder().errors(errors::add).output(output::add).build();
+    private final PolicyEngine cell = PolicyEngine.builder().errors(errors::add).output(output::add).build();
 
     @Test
     void latin1Bytes_areRefusedWithTheirByteOffsetAndLine() throws IOException {

@@ -1,5 +1,8 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Nil;
+import net.smc.policy.api.Managed;
+import net.smc.policy.api.Op;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -14,8 +17,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import net.smc.policy.lang.SourcePos;
 import org.junit.jupiter.api.BeforeEach;
@@ -251,11 +254,11 @@ class DispatchTest {
 
     private final List<String> output = new ArrayList<>();
     private final List<Diagnostic> errors = new ArrayList<>();
-    private Cell cell;
+    private PolicyEngine cell;
 
     @BeforeEach
     void newCell() {
-        cell = Cell.builder()
+        cell = PolicyEngine.builder()
                 .output(output::add)
                 .errors(errors::add)
                 .register("Counter", Counter.class)
@@ -268,7 +271,7 @@ class DispatchTest {
         RunResult result = cell.run("t.p2", text);
         assertEquals(List.of(), errors, "errors of " + text);
         assertEquals(RunResult.Status.OK, result.status(), text);
-        return Cell.print(result.value());
+        return PolicyEngine.print(result.value());
     }
 
     /** Runs a unit that must fail with one runtime error; answers its message. */
@@ -687,7 +690,7 @@ class DispatchTest {
     @Test
     void arityMismatch_isRejectedWhenTheCellIsBuilt() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> Cell.builder().register("Bad", Bad.class).build());
+                () -> PolicyEngine.builder().register("Bad", Bad.class).build());
         assertTrue(e.getMessage().contains("'at:put:'"), e.getMessage());
     }
 

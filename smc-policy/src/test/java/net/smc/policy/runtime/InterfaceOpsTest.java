@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Op;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -7,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -131,11 +132,11 @@ class InterfaceOpsTest {
     }
 
     private final List<Diagnostic> errors = new ArrayList<>();
-    private Cell cell;
+    private PolicyEngine cell;
 
     @BeforeEach
     void newCell() {
-        cell = Cell.builder().errors(errors::add).build();
+        cell = PolicyEngine.builder().errors(errors::add).build();
     }
 
     private String eval(Object object, String text) {
@@ -143,7 +144,7 @@ class InterfaceOpsTest {
         RunResult result = cell.run("t.p2", text);
         assertEquals(List.of(), errors, "errors of " + text);
         assertEquals(RunResult.Status.OK, result.status(), text);
-        return Cell.print(result.value());
+        return PolicyEngine.print(result.value());
     }
 
     @Test

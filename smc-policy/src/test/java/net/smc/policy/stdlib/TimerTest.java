@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.TimerQueue;
 import org.junit.jupiter.api.Test;
 
@@ -15,7 +15,7 @@ class TimerTest {
     private long now = 1_000;
     private final List<String> lines = new ArrayList<>();
 
-    private Cell cell(Cell.Builder builder) {
+    private PolicyEngine cell(PolicyEngine.Builder builder) {
         return builder.clock(() -> now).output(lines::add).errors(d -> lines.add("error: " + d.message())).build();
     }
 
@@ -38,7 +38,7 @@ class TimerTest {
 
     @Test
     void repeat_ticksAtEachPeriodOfTheVirtualClock() {
-        Cell cell = cell(Cell.builder());
+        PolicyEngine cell = cell(PolicyEngine.builder());
         cell.run("t.p2", TICKING + "root/timer repeat: 250 event: root/event/tick.");
         advanceTo(cell.timers(), 1_800);
         assertEquals(List.of("1@1250", "2@1500", "3@1750"), lines);
@@ -46,7 +46,7 @@ class TimerTest {
 
     @Test
     void nothingRuns_untilTheOwnerRunsTheQueue() {
-        Cell cell = cell(Cell.builder());
+        PolicyEngine cell = cell(PolicyEngine.builder());
         cell.run("t.p2", TICKING + "root/timer tick: 10 event: root/event/tick.");
         now = 5_000;
         assertEquals(List.of(), lines);
@@ -59,7 +59,7 @@ class TimerTest {
         List<Long> delays = new ArrayList<>();
         List<Runnable> tasks = new ArrayList<>();
         int[] cancelled = {0};
-        Cell cell = cell(Cell.builder().scheduler((delay, task) -> {
+        PolicyEngine cell = cell(PolicyEngine.builder().scheduler((delay, task) -> {
             delays.add(delay);
             tasks.add(task);
             return () -> cancelled[0]++;
@@ -76,7 +76,7 @@ class TimerTest {
 
     @Test
     void stop_thenStart_restartsWithAFullPeriod() {
-        Cell cell = cell(Cell.builder());
+        PolicyEngine cell = cell(PolicyEngine.builder());
         cell.run("t.p2", TICKING + "root/timer repeat: 100 event: root/event/tick.");
         advanceTo(cell.timers(), 1_150);
         cell.run("t.p2", "root/timer stop: 1");
@@ -88,7 +88,7 @@ class TimerTest {
 
     @Test
     void cancel_leavesNothingPending() {
-        Cell cell = cell(Cell.builder());
+        PolicyEngine cell = cell(PolicyEngine.builder());
         cell.run("t.p2", TICKING + "root/timer repeat: 100 event: root/event/tick; tick: 50 event: root/event/tick.");
         assertEquals(2, cell.timers().pending());
         cell.run("t.p2", "root/timer cancel");
@@ -97,7 +97,7 @@ class TimerTest {
 
     @Test
     void aPolicyError_isReported_andTheTimerGoesOn() {
-        Cell cell = cell(Cell.builder());
+        PolicyEngine cell = cell(PolicyEngine.builder());
         cell.run("t.p2", TICKING + """
                 q := root/factory/ecapolicy create.
                 q event: root/event/tick; action: [:count | count / 0].
@@ -112,7 +112,7 @@ class TimerTest {
 
     @Test
     void exitInATick_endsTheCell_andLaterTicksDoNotRun() {
-        Cell cell = cell(Cell.builder());
+        PolicyEngine cell = cell(PolicyEngine.builder());
         cell.run("t.p2", TICKING + """
                 q := root/factory/ecapolicy create.
                 q event: root/event/tick; action: [:count | root exit: 4].

@@ -18,7 +18,7 @@ import net.smc.core.message.MessageEncoder;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.security.SigningKey;
 import net.smc.core.security.VerificationKey;
-import net.smc.policy.Cell;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.RunResult;
 
 /**
@@ -91,14 +91,14 @@ public final class Calibration {
                 + "root/role at: \"" + manager.name() + "\" put: root/factory/domain create.\n"
                 + "root/role/" + manager.name() + " at: \"policy\" put: root/factory/domain create.\n";
         double loadPerByte = time(20, () -> {
-            Cell cell = Cell.builder().build();
+            PolicyEngine cell = PolicyEngine.builder().build();
             check(cell.run("boot", boot));
             check(cell.run("domains", domains));
             check(cell.run("mission", text));
         }) / text.length();
 
         int policies = 20;
-        Cell cell = Cell.builder().build();
+        PolicyEngine cell = PolicyEngine.builder().build();
         check(cell.run("boot", boot));
         StringBuilder conditions = new StringBuilder();
         for (int i = 0; i < policies; i++) {

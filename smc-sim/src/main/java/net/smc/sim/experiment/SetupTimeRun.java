@@ -11,7 +11,7 @@ import net.smc.core.cell.sim.TeamSimulation;
 import net.smc.core.mission.Mission;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.InMemoryNetwork;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * One run of the set-up time experiment on the simulated network: a generated mission's whole team

@@ -3,7 +3,7 @@ package net.smc.sim.task;
 import net.smc.core.task.Attr;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 
 /** The task interface of {@link Navigator}: go to a point on the map, around obstacles and avoided zones. */
 @TaskInterface("Navigator")

@@ -4,7 +4,7 @@ import java.util.List;
 import net.smc.core.task.Attr;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
-import net.smc.policy.runtime.Op;
+import net.smc.policy.api.Op;
 
 /** The task interface of {@link Relay}: keep the radio link to given peers above a threshold. */
 @TaskInterface("Relay")

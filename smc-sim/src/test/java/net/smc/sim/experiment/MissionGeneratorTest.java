@@ -16,7 +16,7 @@ import net.smc.core.cell.Scheme;
 import net.smc.core.cell.Slots;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 class MissionGeneratorTest {
     @TempDir

@@ -12,7 +12,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import net.smc.core.cell.Scheme;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 class SetupTimeRunTest {
     /** Fixed costs of the order Calibration measures, so the test does not depend on the machine. */

@@ -7,8 +7,8 @@ import java.util.ArrayList;
 import java.util.List;
 import net.smc.core.capability.EventDescription;
 import net.smc.core.task.Task;
-import net.smc.policy.Cell;
-import net.smc.policy.Diagnostic;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
 
 /**
@@ -18,7 +18,7 @@ import net.smc.policy.RunResult;
 final class EventLog {
     final List<String> lines = new ArrayList<>();
     final List<Diagnostic> errors = new ArrayList<>();
-    final Cell cell = Cell.builder().output(lines::add).errors(errors::add).build();
+    final PolicyEngine cell = PolicyEngine.builder().output(lines::add).errors(errors::add).build();
 
     EventLog watch(Task task) throws Exception {
         task.bind(cell);

@@ -9,7 +9,7 @@ import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
 import net.smc.core.mission.Mission;
 import net.smc.core.transport.sim.LinkProfile;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * One seeded run of a reconnaissance team under faults: the seed picks the team (4 to 13

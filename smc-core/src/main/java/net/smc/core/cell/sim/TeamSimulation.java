@@ -25,7 +25,7 @@ import net.smc.core.role.TaskProvider;
 import net.smc.core.security.Claims;
 import net.smc.core.security.Credential;
 import net.smc.core.security.IdealAuthentication;
-import net.smc.core.security.Identity;
+import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
 import net.smc.core.security.SigningKey;
@@ -35,7 +35,7 @@ import net.smc.core.transport.Transport;
 import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 
 /**
  * A whole team of cells on the in-memory network and one virtual clock: the deterministic
@@ -70,7 +70,7 @@ public final class TeamSimulation {
         NONE
     }
 
-    private static final Map<String, Identity> IDENTITIES = new ConcurrentHashMap<>();
+    private static final Map<String, SigningIdentity> IDENTITIES = new ConcurrentHashMap<>();
     private static final SigningKey AUTHORITY = key(1);
     private static final SigningKey FOREIGN_AUTHORITY = key(2);
 
@@ -87,7 +87,7 @@ public final class TeamSimulation {
     private final Deque<String> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
     private final Function<String, TaskProvider> tasks;
-    private final net.smc.policy.AuthMode auth;
+    private final net.smc.policy.api.AuthMode auth;
     private final TeamInvariants invariants;
     private final boolean checking;
     private final List<Set<String>> partition = new ArrayList<>();
@@ -362,11 +362,11 @@ public final class TeamSimulation {
      * authority (a foreign one for a rogue). Made once per vehicle id and JVM: Ed25519 is slow and
      * they change no outcome.
      */
-    public static Identity identity(SimVehicle v, String missionName) {
+    public static SigningIdentity identity(SimVehicle v, String missionName) {
         return IDENTITIES.computeIfAbsent((v.rogue() ? "rogue:" : "") + v.id() + "@" + missionName, k -> {
             SigningKey key = key(k.hashCode() * 7919L + 3);
             SigningKey issuer = v.rogue() ? FOREIGN_AUTHORITY : AUTHORITY;
-            return new Identity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
+            return new SigningIdentity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
                     Long.MAX_VALUE / 2), issuer));
         });
     }
@@ -403,7 +403,7 @@ public final class TeamSimulation {
         private long mergeBoundMillis = -1;
         private Consumer<CellEvent> listener = e -> { };
         private Function<String, TaskProvider> tasks = id -> TaskProvider.NONE;
-        private net.smc.policy.AuthMode auth = net.smc.policy.AuthMode.OFF;
+        private net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
         private boolean checking = true;
 
         private Builder(Mission mission, PolicyRepository repository, long seed) {
@@ -460,7 +460,7 @@ public final class TeamSimulation {
         }
 
         /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
-        public Builder auth(net.smc.policy.AuthMode mode) {
+        public Builder auth(net.smc.policy.api.AuthMode mode) {
             this.auth = Objects.requireNonNull(mode, "auth");
             return this;
         }

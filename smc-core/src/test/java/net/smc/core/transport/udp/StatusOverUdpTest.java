@@ -16,8 +16,8 @@ import java.util.concurrent.Executors;
 
 import net.smc.core.transport.Recorder;
 import net.smc.core.transport.Signal;
-import net.smc.core.transport.StatusClient;
-import net.smc.core.transport.StatusResponder;
+import net.smc.core.transport.udp.StatusClient;
+import net.smc.core.transport.udp.StatusResponder;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
