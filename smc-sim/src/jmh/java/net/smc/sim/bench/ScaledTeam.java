@@ -17,7 +17,7 @@ import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.CpuModel;
-import net.smc.policy.PolicyRepository;
+import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.experiment.GeneratedMission;
 import net.smc.sim.experiment.MissionGenerator;
 import net.smc.sim.experiment.TreeShape;
