@@ -46,7 +46,7 @@ public final class TeamScaleReport {
                 team.sim.nowMillis(), (System.nanoTime() - t1) / 1e9, seats, n - 1));
         long t2 = System.nanoTime();
         System.out.printf(Locale.ROOT, "%,d vehicles: built in %.2f s; formed %s (%d seats) in %d ms simulated, %.1f s wall "
-                + "(%.2f simulated s per wall s)%n", n, (t1 - t0) / 1e9, formed, team.acceptedSeats(), team.formationMillis(),
+                + "(%.3f simulated s per wall s)%n", n, (t1 - t0) / 1e9, formed, team.acceptedSeats(), team.formationMillis(),
                 (t2 - t1) / 1e9, team.sim.nowMillis() / 1e6 / ((t2 - t1) / 1e9) * 1e3);
         long[] datagrams = new long[256];
         long[] bytes = new long[256];
