@@ -19,6 +19,11 @@ import picocli.CommandLine.TypeConversionException;
 final class CellOptions {
     /** The repository used when {@code --repository} is not given, if the current directory has it. */
     static final String DEFAULT_REPOSITORY = "policies";
+    /**
+     * The exit status of a command stopped by a signal, as the shell shows one ended by SIGTERM
+     * (128 + 15); the process itself exits with the JVM's status for the signal it got (130 for SIGINT).
+     */
+    static final int STOPPED = 143;
 
     @Option(names = "--auth", paramLabel = "allow|deny", converter = AuthConverter.class,
             description = "Check authorisation policies; when none decides, allow or deny. "
@@ -78,11 +83,21 @@ final class CellOptions {
      * in one fresh cell, ends the boot phase and runs {@code work}; answers its exit status.
      */
     int withBootedCell(CommandSpec spec, Io io, List<Path> files, BootedWork work) throws Exception {
+        return withBootedCell(spec, io, files, StopSignal.manual(), work);
+    }
+
+    /**
+     * As {@link #withBootedCell(CommandSpec, Io, List, BootedWork)}, and when {@code stop} fires the
+     * cell is stopped ({@link net.smc.policy.PolicyEngine#stop}, status {@value #STOPPED}) whatever it
+     * is running, and the command ends with one line saying why.
+     */
+    int withBootedCell(CommandSpec spec, Io io, List<Path> files, StopSignal stop, BootedWork work) throws Exception {
         List<Path> units = readableFiles(spec, io.workingDir(), files);
         PolicyRepository repo = repository(spec, io.workingDir());
         try {
             return LargeStack.call(() -> {
                 CommandCell cell = new CommandCell(io, auth, repo, userArguments);
+                stop.whenTriggered(() -> cell.cell().stop(STOPPED));
                 cell.boot(units);
                 cell.cell().endBoot();
                 return work.run(cell);

@@ -53,14 +53,15 @@ final class CommandCell {
 
     /**
      * Runs the cell's timers on the system clock until none is pending (every ticker stopped or
-     * cancelled, every one-shot fired) or {@code root exit} ran: the process waits between them.
+     * cancelled, every one-shot fired), {@code root exit} ran, or {@code stop} fired: the process
+     * waits between them.
      */
-    void runTimers() throws InterruptedException {
+    void runTimers(StopSignal stop) throws InterruptedException {
         var timers = cell.timers();
         while (cell.exitStatus().isEmpty() && timers.nextDue().isPresent()) {
             long wait = timers.nextDue().getAsLong() - System.currentTimeMillis();
-            if (wait > 0) {
-                Thread.sleep(wait);
+            if (wait > 0 && stop.await(wait)) {
+                return;
             }
             timers.runDue();
         }

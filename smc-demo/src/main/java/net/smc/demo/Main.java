@@ -33,18 +33,21 @@ public final class Main implements Callable<Integer> {
         System.exit(commandLine(Io.system()).execute(args));
     }
 
-    /** The {@code smc} command reading and writing {@code io}'s streams; {@code smc node} stops when the JVM shuts down. */
+    /**
+     * The {@code smc} command reading and writing {@code io}'s streams; {@code smc node} and
+     * {@code smc run} stop when the JVM shuts down (SIGTERM, SIGINT).
+     */
     static CommandLine commandLine(Io io) {
         return commandLine(io, StopSignal::onShutdown);
     }
 
-    /** The {@code smc} command, whose {@code node} runs until a signal from {@code nodeStops} fires. */
-    static CommandLine commandLine(Io io, Supplier<StopSignal> nodeStops) {
+    /** The {@code smc} command, whose {@code node} runs (and {@code run} may run) until a signal from {@code stops} fires. */
+    static CommandLine commandLine(Io io, Supplier<StopSignal> stops) {
         CommandLine commandLine = new CommandLine(new Main())
                 .addSubcommand(new CommandLine(new ExperimentCommand()).addSubcommand(new SetupTimeCommand(io)))
                 .addSubcommand(new KeysCommand(io))
-                .addSubcommand(new NodeCommand(io, nodeStops))
-                .addSubcommand(new RunCommand(io))
+                .addSubcommand(new NodeCommand(io, stops))
+                .addSubcommand(new RunCommand(io, stops))
                 .addSubcommand(new ShellCommand(io))
                 .addSubcommand(new StatusCommand(io))
                 .addSubcommand(new ValidateCommand(io));

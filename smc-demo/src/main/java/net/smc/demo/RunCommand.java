@@ -3,6 +3,7 @@ package net.smc.demo;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -22,9 +23,11 @@ import picocli.CommandLine.Spec;
             "1:an error was reported: a syntax or runtime error in a unit, or an error inside a policy "
                     + "(which does not stop the unit, but counts)",
             "2:usage error: unknown option, bad --auth value, no files, a file that cannot be read",
+            "130, 143:ended by SIGINT (Ctrl-C) or SIGTERM, whatever it was running, with one line saying so",
             "n:a unit ran root exit: n (root exit is 0); the later files do not run"})
 final class RunCommand implements Callable<Integer> {
     private final Io io;
+    private final Supplier<StopSignal> stops;
 
     @Spec
     CommandSpec spec;
@@ -37,8 +40,10 @@ final class RunCommand implements Callable<Integer> {
                 + "and root argsAsHash."})
     List<Path> files;
 
-    RunCommand(Io io) {
+    /** {@code smc run} on {@code io}'s streams, ended early when a signal from {@code stops} fires. */
+    RunCommand(Io io, Supplier<StopSignal> stops) {
         this.io = io;
+        this.stops = stops;
     }
 
     @Override
@@ -54,9 +59,17 @@ final class RunCommand implements Callable<Integer> {
                 throw new picocli.CommandLine.ParameterException(spec.commandLine(), "no files to run before --");
             }
         }
-        return options.withBootedCell(spec, io, toRun, cell -> {
-            cell.runTimers();
-            return cell.exitStatus().orElse(cell.clean() ? 0 : 1);
-        });
+        try (StopSignal stop = stops.get()) {
+            int status = options.withBootedCell(spec, io, toRun, stop, cell -> {
+                cell.runTimers(stop);
+                return cell.exitStatus().orElse(cell.clean() ? 0 : 1);
+            });
+            if (stop.triggered()) {
+                io.stderr().println(spec.qualifiedName() + ": stopped: " + stop.reason());
+                io.stderr().flush();
+                return CellOptions.STOPPED;
+            }
+            return status;
+        }
     }
 }

@@ -4,10 +4,12 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
 /**
- * What ends a running {@code smc node}: the process being asked to end (SIGTERM, SIGINT: a JVM
- * shutdown hook), or, in tests, {@link #trigger}. The node waits in {@link #await()}, closes its cell,
- * and then {@link #close()}s this signal; a shutdown hook waits for that (at most
- * {@value #CLOSE_WAIT_SECONDS} s), so the JVM does not halt while the node is still closing.
+ * What ends a running {@code smc node} or {@code smc run}: the process being asked to end (SIGTERM,
+ * SIGINT: a JVM shutdown hook), or, in tests, {@link #trigger}. The node waits in {@link #await()},
+ * closes its cell, and then {@link #close()}s this signal; {@code smc run} has its cell stopped by
+ * {@link #whenTriggered} and closes the signal once it has said so. A shutdown hook waits for the
+ * close (at most {@value #CLOSE_WAIT_SECONDS} s), so the JVM does not halt while the command is
+ * still ending; then it halts with its status for the signal (130 for SIGINT, 143 for SIGTERM).
  */
 final class StopSignal implements AutoCloseable {
     static final long CLOSE_WAIT_SECONDS = 10;
@@ -15,6 +17,8 @@ final class StopSignal implements AutoCloseable {
     private final CountDownLatch stop = new CountDownLatch(1);
     private final CountDownLatch closed = new CountDownLatch(1);
     private volatile String reason = "";
+    private Runnable onTrigger = () -> {
+    };
     private Thread hook;
 
     /** A signal only {@link #trigger} fires: for nodes run in-process by tests. */
@@ -30,12 +34,51 @@ final class StopSignal implements AutoCloseable {
         return signal;
     }
 
-    /** Asks the node to stop; {@code why} ends up in its last line. Later calls do nothing. */
+    /** Asks the command to stop; {@code why} ends up in its last line. Later calls do nothing. */
     void trigger(String why) {
-        if (stop.getCount() > 0) {
+        Runnable action;
+        synchronized (this) {
+            if (stop.getCount() == 0) {
+                return;
+            }
             reason = why;
             stop.countDown();
+            action = onTrigger;
         }
+        action.run();
+    }
+
+    /**
+     * Runs {@code action} when the signal fires, on the thread that fires it (at once, if it has
+     * fired already): {@code action} must only ask what runs to stop, not wait for it.
+     */
+    void whenTriggered(Runnable action) {
+        synchronized (this) {
+            if (stop.getCount() > 0) {
+                onTrigger = action;
+                return;
+            }
+        }
+        action.run();
+    }
+
+    /** Whether the signal has fired. */
+    boolean triggered() {
+        return stop.getCount() == 0;
+    }
+
+    /** Why the signal fired ({@code ""} while it has not). */
+    String reason() {
+        return reason;
+    }
+
+    /**
+     * Waits until the signal fires or {@code millis} have passed.
+     *
+     * @return whether it fired
+     */
+    boolean await(long millis) throws InterruptedException {
+        return stop.await(millis, TimeUnit.MILLISECONDS);
     }
 
     /** Waits until the node is asked to stop, and answers why. */

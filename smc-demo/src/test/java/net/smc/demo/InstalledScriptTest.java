@@ -81,6 +81,51 @@ class InstalledScriptTest {
         assertEquals(143, process.exitValue(), "the JVM's status for SIGTERM");
     }
 
+    @Test
+    void installedSmcRun_aFileOf8MB_runsUnderAHeapOf48MB() throws Exception {
+        Path script = script();
+        assertTrue(Files.isExecutable(script), "the installed smc script is missing at " + script);
+        Path file = dir.resolve("big.p2");
+        int repeats = 200_000;   // 42 bytes each: 8.4 MB, 1.4 million tokens
+        try (var out = Files.newBufferedWriter(file)) {
+            out.write("x := 0.\n");
+            for (int i = 0; i < repeats; i++) {
+                out.write("x := x + 1.\ns := \"a string literal " + (1_000_000 + i) + "\".\n");
+            }
+            out.write("root print: x. root print: s.\n");
+        }
+        ProcessBuilder builder = new ProcessBuilder(script.toString(), "run", file.toString())
+                .redirectErrorStream(true);
+        builder.environment().put("JAVA_OPTS", "-Xmx48m");   // the file's text alone is 8.4 MB of it
+
+        Process process = builder.start();
+        process.getOutputStream().close();
+        String out = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+
+        assertTrue(process.waitFor(120, TimeUnit.SECONDS), "smc did not end within 120 s");
+        assertEquals(repeats + "\na string literal " + (1_000_000 + repeats - 1) + "\n", out);
+        assertEquals(0, process.exitValue());
+    }
+
+    @Test
+    void installedSmcRun_onSigterm_endsAnEndlessLoopAndSaysSo() throws Exception {
+        Path script = script();
+        assertTrue(Files.isExecutable(script), "the installed smc script is missing at " + script);
+        Path file = Files.writeString(dir.resolve("loop.p2"), "root print: \"looping\".\n[true] whileTrue: [1 + 1].\n");
+        Path err = dir.resolve("err.log");
+        Process process = new ProcessBuilder(script.toString(), "run", file.toString())
+                .redirectError(err.toFile()).start();
+        process.getOutputStream().close();
+        var out = new java.io.BufferedReader(new java.io.InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
+        assertEquals("looping", out.readLine(), "the loop starts after this line");
+
+        process.destroy();   // SIGTERM
+
+        assertTrue(process.waitFor(30, TimeUnit.SECONDS), "smc run did not end within 30 s of SIGTERM");
+        assertEquals(List.of("smc run: stopped: the process was asked to end (SIGTERM or SIGINT)"), Files.readAllLines(err));
+        assertEquals(143, process.exitValue(), "the JVM's status for SIGTERM");
+    }
+
     private static int freePort() throws IOException {
         try (DatagramSocket probe = new DatagramSocket(new InetSocketAddress("0.0.0.0", 0))) {
             return probe.getLocalPort();

@@ -346,7 +346,19 @@ public final class PolicyEngine {
         }
     }
 
-    /** The status given to {@code root exit}, once it has run. */
+    /**
+     * Asks the cell to stop, from any thread: what it is running (a unit, an event's policies, a
+     * timer) ends within {@link net.smc.policy.api.Limits#CLOCK_CHECK_INTERVAL} sends or at its next
+     * top-level statement, as if {@code root exit: status} had run there; then {@link #exitStatus()}
+     * is {@code status} and the cell runs nothing more.
+     *
+     * @throws IllegalArgumentException when {@code status} is negative
+     */
+    public void stop(int status) {
+        runtime.stop(status);
+    }
+
+    /** The status given to {@code root exit} (or to {@link #stop}), once it has run. */
     public OptionalInt exitStatus() {
         exited();
         return exitStatus == null ? OptionalInt.empty() : OptionalInt.of(exitStatus);

@@ -140,4 +140,24 @@ class RunLimitsTest {
         org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
                 () -> Limits.DEFAULT.withMaxRunMillis(-1));
     }
+
+    @Test
+    void stop_endsAnEndlessLoopWithinTheCheckInterval_andNothingRunsAfter() {
+        PolicyEngine[] cell = new PolicyEngine[1];
+        cell[0] = PolicyEngine.builder().errors(errors::add).output(line -> {
+            output.add(line);
+            if (output.size() == 3) {
+                cell[0].stop(143);   // as a signal handler would, here on the cell's own thread
+            }
+        }).build();
+
+        RunResult result = cell[0].run("loop.p2", "[true] whileTrue: [root print: \"tick\"]. root print: \"after\".");
+
+        assertEquals(RunResult.Status.EXITED, result.status());
+        assertEquals(143, cell[0].exitStatus().orElseThrow());
+        assertTrue(output.size() < 3 + Limits.CLOCK_CHECK_INTERVAL, "ended within the check interval: " + output.size());
+        assertTrue(!output.contains("after"), "the rest of the unit does not run");
+        assertEquals(List.of(), messages(), "a stop is not an error");
+        assertEquals(RunResult.Status.EXITED, cell[0].run("next.p2", "root print: 1.").status());
+    }
 }

@@ -85,6 +85,11 @@ final class Supervisor {
     }
 
     void asManager(long now) {
+        // A child left holding nothing from this cell (its seats taken back, or reconciled away),
+        // with no assignment in flight to it, is no child: drop it, so that it can be recruited again
+        // (discovery replies from children are ignored) instead of lingering, neither supervised nor free.
+        st.children.values().removeIf(c -> c.seats.isEmpty()
+                && st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)));
         List<Child> silent = st.children.values().stream()
                 .filter(c -> !c.seats.isEmpty() && now - c.lastHeard > ctx.timing().failureTimeoutMillis())
                 // An assignment in flight may still make it keep its seats: wait for its answer or expiry.

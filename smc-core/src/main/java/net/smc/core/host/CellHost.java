@@ -65,6 +65,9 @@ public final class CellHost implements AutoCloseable {
             timer.shutdownNow();
             throw e;
         }
+        if (s.identity != null) {   // session traffic and status queries before strangers' signed datagrams
+            udp.setUrgent(d -> SecureTransport.isSessionTraffic(d) || StatusResponder.looksLikeQuery(d));
+        }
         Cell[] made = new Cell[1];
         this.status = new StatusResponder(udp, () -> made[0] == null ? "{}" : made[0].view().toJson());
         Transport under = Objects.requireNonNull(s.wrap.apply(status), "the transport wrapper returned null");

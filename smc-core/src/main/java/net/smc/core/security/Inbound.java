@@ -59,8 +59,14 @@ final class Inbound {
 
     /**
      * A HELLO: after the signed checks, it must be for this vehicle and newer than the last HELLO
-     * taken from the sender. Keys are derived when it brings a key not seen before (or there is no
-     * session yet); a HELLO goes back when its echo is not this side's current key.
+     * taken from the sender. A session is bound to fresh values from both sides: keys are derived
+     * only from a HELLO that echoes this side's current key for the pair, which proves the HELLO was
+     * made after that key was (a recorded HELLO replayed to a restarted vehicle echoes a key that
+     * vehicle no longer has). Any other HELLO commits nothing but the peer's offered key and is
+     * answered with this side's key ({@link ControlEvent#HANDSHAKE_OFFERED}). A HELLO goes back when
+     * its echo is not this side's current key, when it has just agreed new keys (so the peer, which
+     * may not yet have seen this side's key echoed, can agree too), or when none went to the peer
+     * within the retry interval (the peer retries: it lost the HELLO that would have let it agree).
      */
     private Unwrapped hello(Frame.Hello h, long now) throws Malformed {
         String peer = h.credential().vehicleId();
@@ -78,7 +84,8 @@ final class Inbound {
                     + " is not after the newest handshake taken from it (" + known.lastHelloCounter + ")");
         }
         Ephemeral mine = known != null && known.ephemeral != null ? known.ephemeral : Ephemeral.generate(e.random());
-        boolean newKey = known == null || known.session == null || !Arrays.equals(known.peerEphemeral, h.ephemeral());
+        boolean echoed = Arrays.equals(h.echo(), mine.publicBytes());
+        boolean newKey = echoed && (known == null || known.session == null || !Arrays.equals(known.session.peerEphemeral, h.ephemeral()));
         PairKeys keys = newKey
                 ? PairKeys.derive(mine.agree(h.ephemeral()), e.id(), mine.publicBytes(), peer, h.ephemeral())
                 : null;
@@ -87,18 +94,25 @@ final class Inbound {
         p.ephemeral = mine;
         p.peerEphemeral = h.ephemeral();
         p.lastHelloCounter = h.counter();
+        ControlEvent event;
         if (keys != null) {
-            p.session = new Session(keys, e.settings.replayWindow());
+            p.session = new Session(keys, h.ephemeral(), e.settings.replayWindow());
             e.stats.keysAgreed++;
-        } else {
+            event = ControlEvent.KEYS_AGREED;
+        } else if (echoed) {
             e.stats.hellosRepeated++;
+            event = ControlEvent.HANDSHAKE_REPEATED;
+        } else {
+            e.stats.hellosOffered++;
+            event = ControlEvent.HANDSHAKE_OFFERED;
         }
+        boolean answeredLately = p.helloSentMillis != PeerState.NEVER && now - p.helloSentMillis < e.settings.handshakeRetryMillis();
         byte[] reply = null;
-        if (!Arrays.equals(h.echo(), mine.publicBytes())) {
+        if (!echoed || keys != null || !answeredLately) {
             p.helloSentMillis = now;
             reply = e.helloDatagram(peer, p);
         }
-        return new Unwrapped.Control(peer, keys != null ? ControlEvent.KEYS_AGREED : ControlEvent.HANDSHAKE_REPEATED, reply);
+        return new Unwrapped.Control(peer, event, reply);
     }
 
     private Unwrapped pairMac(Frame.Keyed k, long now) {

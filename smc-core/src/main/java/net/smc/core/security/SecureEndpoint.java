@@ -29,8 +29,10 @@ import net.smc.core.transport.Transport;
  * <pre>{@code
  * SecureEndpoint a = SecureEndpoint.builder(identityA, trust, clock).build();
  * byte[] hello = a.startHandshake("uav-2");               // send to uav-2
- * Unwrapped u = b.unwrap(hello);                          // Control(KEYS_AGREED) with a reply for uav-1
- * a.unwrap(((Unwrapped.Control) u).reply());              // Control(KEYS_AGREED), no reply
+ * Unwrapped u = b.unwrap(hello);                          // Control(HANDSHAKE_OFFERED) with b's value for uav-1
+ * u = a.unwrap(((Unwrapped.Control) u).reply());          // Control(KEYS_AGREED), echoing b's value
+ * u = b.unwrap(((Unwrapped.Control) u).reply());          // Control(KEYS_AGREED), a confirmation
+ * a.unwrap(((Unwrapped.Control) u).reply());              // Control(HANDSHAKE_REPEATED), no reply
  * b.unwrap(a.wrapFor("uav-2", heartbeat));                // Delivered("uav-1", PAIR_MAC, heartbeat)
  * }</pre>
  *
@@ -136,7 +138,7 @@ public final class SecureEndpoint {
      * A handshake for {@code peer}, to be sent to it: a signed HELLO offering this side's X25519 key
      * for the pair (made now if there is none; a retry offers the same one) and echoing the peer's
      * key as last seen. The peer answers when it has not yet seen this side's key; each side derives
-     * the session keys on taking a HELLO that brings the other's key
+     * the session keys on taking a HELLO that echoes its own key and brings the other's
      * ({@link Unwrapped.ControlEvent#KEYS_AGREED}). Works for a peer not yet authenticated too (say
      * one that sent a MAC'd message this endpoint forgot the key of): the HELLO proves who sends it.
      */

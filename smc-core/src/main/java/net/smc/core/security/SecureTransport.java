@@ -25,7 +25,11 @@ import org.slf4j.LoggerFactory;
  *       {@value #PROBES_PER_RETRY} such per handshake-retry interval in all.</li>
  * </ul>
  *
- * Which vehicle is at which address is learned from authenticated datagrams only (signed, or MAC'd
+ * Signed datagrams (whose check costs an Ed25519 verification) are checked within a budget per
+ * source address and in all ({@link SignatureBudget}); beyond it they are dropped unchecked and
+ * counted ({@link #droppedOverBudget}).
+ *
+ * <p>Which vehicle is at which address is learned from authenticated datagrams only (signed, or MAC'd
  * under a session). Same threading as the transport it wraps: one cell thread.
  */
 public final class SecureTransport implements AuthenticatingTransport {
@@ -36,8 +40,10 @@ public final class SecureTransport implements AuthenticatingTransport {
     private final SecureEndpoint endpoint;
     private final Map<Address, String> peerAt = new HashMap<>();
     private final Map<String, Address> addressOf = new HashMap<>();
+    private final SignatureBudget budget = new SignatureBudget(SignatureBudget.PER_SOURCE_PER_SECOND, SignatureBudget.TOTAL_PER_SECOND);
     private AuthenticatedReceiver receiver;
     private long droppedNoReceiver;
+    private long droppedOverBudget;
     private long probeIntervalStart = Long.MIN_VALUE;
     private int probesInInterval;
 
@@ -153,7 +159,31 @@ public final class SecureTransport implements AuthenticatingTransport {
         inner.close();
     }
 
+    /**
+     * Whether {@code datagram} is the traffic of an established session or team ({@code PAIR_MAC},
+     * {@code TEAM_MAC}, {@code TEAM_KEY}), checked with a MAC, as opposed to a signed datagram from
+     * anyone. Looks at two bytes only: for a transport that hands such traffic to the cell first
+     * (say {@code UdpTransport.setUrgent}); the claim is proven later, by the MAC.
+     */
+    public static boolean isSessionTraffic(byte[] datagram) {
+        if (datagram.length < 2 || datagram[0] != FrameCodec.VERSION) {
+            return false;
+        }
+        int kind = datagram[1];
+        return kind == FrameCodec.PAIR_MAC || kind == FrameCodec.TEAM_MAC || kind == FrameCodec.TEAM_KEY;
+    }
+
+    /** Signed datagrams dropped unchecked because their source (or all sources) spent the signature budget. */
+    public long droppedOverBudget() {
+        return droppedOverBudget;
+    }
+
     private void onDatagram(Address from, byte[] data) {
+        if (!isSessionTraffic(data) && !budget.take(from, endpoint.clock.nowMillis())) {
+            droppedOverBudget++;
+            LOG.debug("'{}' dropped a signed datagram of {} bytes from {} unchecked: over the signature budget", endpoint.id(), data.length, from);
+            return;
+        }
         Unwrapped result = endpoint.unwrap(data);
         if (result instanceof Unwrapped.Delivered d) {
             if (d.protection() != Protection.TEAM_MAC) {
@@ -165,7 +195,9 @@ public final class SecureTransport implements AuthenticatingTransport {
             }
             receiver.onMessage(d.sender(), from, d.protection(), d.payload());
         } else if (result instanceof Unwrapped.Control c) {
-            learn(c.sender(), from);
+            if (c.event() != Unwrapped.ControlEvent.HANDSHAKE_OFFERED) {
+                learn(c.sender(), from);   // an offer may be a replay: it proves nothing about where its sender is now
+            }
             c.replyDatagram().ifPresent(reply -> inner.send(from, reply));
         } else if (result instanceof Unwrapped.Rejected r && r.reason() == Rejection.UNKNOWN_SENDER) {
             probe(r.claimedSender(), from);

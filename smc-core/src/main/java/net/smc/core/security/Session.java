@@ -2,7 +2,8 @@ package net.smc.core.security;
 
 /**
  * What two vehicles share after a handshake: a MAC per direction, a sealing key per direction, and
- * the receiver's memory of the peer's counters under this session.
+ * the receiver's memory of the peer's counters under this session, and the peer's X25519 value the
+ * session was derived from (a HELLO bringing another value agrees a new session).
  */
 final class Session {
     final TruncatedMac sendMac;
@@ -10,8 +11,10 @@ final class Session {
     final byte[] sendSeal;
     final byte[] receiveSeal;
     final ReplayWindow window;
+    final byte[] peerEphemeral;
 
-    Session(PairKeys keys, int replayWindow) {
+    Session(PairKeys keys, byte[] peerEphemeral, int replayWindow) {
+        this.peerEphemeral = peerEphemeral.clone();
         this.sendMac = new TruncatedMac(keys.sendMac());
         this.receiveMac = new TruncatedMac(keys.receiveMac());
         this.sendSeal = keys.sendSeal();

@@ -11,6 +11,7 @@ final class Stats {
     long hellosSent;
     long keysAgreed;
     long hellosRepeated;
+    long hellosOffered;
     long teamKeysSent;
     long teamKeysInstalled;
     long delivered;
@@ -26,6 +27,6 @@ final class Stats {
             byReason.put(r, rejected[r.ordinal()]);
         }
         return new SecurityCounters(signedWrapped, pairWrapped, teamWrapped, hellosSent, keysAgreed, hellosRepeated,
-                teamKeysSent, teamKeysInstalled, delivered, byReason);
+                hellosOffered, teamKeysSent, teamKeysInstalled, delivered, byReason);
     }
 }

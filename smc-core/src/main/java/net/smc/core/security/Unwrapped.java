@@ -57,16 +57,22 @@ public sealed interface Unwrapped permits Unwrapped.Delivered, Unwrapped.Control
     /** The handshake and key events a {@link Control} reports. */
     enum ControlEvent {
         /**
-         * The peer's handshake brought a key this endpoint had not seen: session keys were derived (a
-         * new session, or a new one replacing the old after the peer restarted). A reply comes with it
-         * when the peer has not yet seen this endpoint's key.
+         * The peer's handshake echoed this endpoint's current key and brought one the session was not
+         * derived from: session keys were derived (a new session, or a new one replacing the old after
+         * the peer restarted). A reply comes with it, so that the peer can agree too.
          */
         KEYS_AGREED,
         /**
-         * The peer's handshake brought nothing new (a retry); the session stands. A reply comes with it
-         * when the peer has not yet seen this endpoint's key.
+         * The peer's handshake echoed this endpoint's key and brought the one the session stands on (a
+         * retry, or the last step); the session stands. No reply.
          */
         HANDSHAKE_REPEATED,
+        /**
+         * The peer's handshake does not echo this endpoint's current key: the peer's first step, or a
+         * recorded HELLO replayed (perhaps to a vehicle that restarted since). Nothing is agreed; the
+         * reply offers this endpoint's key, and keys are derived only from a HELLO that echoes it.
+         */
+        HANDSHAKE_OFFERED,
         /** A team key arrived from a session peer and is now the one in use. */
         TEAM_KEY_INSTALLED
     }

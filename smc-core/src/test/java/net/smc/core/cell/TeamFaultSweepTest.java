@@ -39,6 +39,23 @@ class TeamFaultSweepTest {
                 checks, matched, 100.0 * matched / OUTCOMES.size());
     }
 
+    /**
+     * Seed 3,007,300 (centralised): a new commander took back the only seat a vehicle reported (it
+     * gave the seat to another); the vehicle's child record, left with no seats, was never dropped
+     * (only children holding seats time out), so its discovery replies were ignored for good and it
+     * stayed free beside a hosted seat it could take.
+     */
+    @org.junit.jupiter.api.Test
+    void aChildLeftWithNoSeatsIsDropped_andCanBeRecruitedAgain() {
+        List<String> faults = new ArrayList<>();
+        try {
+            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 3_007_300L, FAULT_MILLIS)
+                    .log(faults::add).run();
+        } catch (InvariantViolation v) {
+            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+        }
+    }
+
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {

@@ -148,10 +148,41 @@ class SecureTransportTest {
         }
         settle();
 
-        assertEquals(3, replays.size(), "discovery, the commander's handshake, the assignment");
+        assertEquals(4, replays.size(), "discovery, the commander's two handshake steps, the assignment");
         assertEquals(heardBefore, vehicle.heard, "a replay delivers nothing");
         assertEquals(refusedBefore + replays.size(), vehicle.counters().rejectedTotal());
         assertEquals(replays.size(), vehicle.counters().rejected(Rejection.REPLAY));
+    }
+
+    @Test
+    void aFloodOfForgedSignatures_isCheckedWithinABudget_andStarvesNeitherOtherSourcesNorSessions() {
+        Cell commander = new Cell("cmdr", 4001);
+        Cell vehicle = new Cell("uav-1", 4002);
+        Cell newcomer = new Cell("uav-2", 4003);
+        commander.transport.broadcast(bytes("DISCOVERY"));
+        settle();
+        byte[] forged = commander.transport.endpoint().wrapSigned(bytes("DISCOVERY"));
+        forged[forged.length - 1] ^= 1;
+        Transport attacker = network.attach(Address.loopback(4666));
+        long checkedBefore = vehicle.counters().rejected(Rejection.BAD_SIGNATURE);
+
+        for (int ms = 0; ms < 2_000; ms++) {   // 20,000 a second for 2 s, from one source
+            for (int i = 0; i < 20; i++) {
+                attacker.send(vehicle.address(), forged);
+            }
+            if (ms == 1_000) {
+                newcomer.transport.send(vehicle.address(), bytes("HELLO from a stranger"));
+                commander.transport.send(vehicle.address(), bytes("HB during the flood"));
+            }
+            scheduler.runUntil(scheduler.nowMillis() + 1);
+        }
+        settle();
+
+        long checked = vehicle.counters().rejected(Rejection.BAD_SIGNATURE) - checkedBefore;
+        assertTrue(checked <= 2 * 2 * SignatureBudget.PER_SOURCE_PER_SECOND, "signatures checked: " + checked);
+        assertTrue(vehicle.transport.droppedOverBudget() >= 40_000 - checked - 1, "dropped unchecked: " + vehicle.transport.droppedOverBudget());
+        assertTrue(vehicle.heard.contains("uav-2/SIGNED/HELLO from a stranger"), "another source keeps its budget: " + vehicle.heard);
+        assertTrue(vehicle.heard.contains("cmdr/PAIR_MAC/HB during the flood"), "session traffic needs no signature: " + vehicle.heard);
     }
 
     @Test

@@ -13,6 +13,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 import net.smc.core.security.Unwrapped.ControlEvent;
 import org.junit.jupiter.api.Test;
 
@@ -36,15 +38,22 @@ class SessionTest {
     }
 
     @Test
-    void handshake_takesTwoDatagrams_andThenMacdTrafficFlowsBothWays() {
+    void handshake_bindsFreshValuesOfBothSides_andThenMacdTrafficFlowsBothWays() {
         byte[] hello = a.startHandshake("uav-b");
         Unwrapped.Control atB = control(b.unwrap(hello));
-        assertEquals(ControlEvent.KEYS_AGREED, atB.event());
-        assertNotNull(atB.reply(), "b has not seen a's key: it answers");
+        assertEquals(ControlEvent.HANDSHAKE_OFFERED, atB.event(), "a's HELLO does not echo b's value: it may be a replay");
+        assertFalse(b.hasSession("uav-a"));
+        assertNotNull(atB.reply(), "b offers its value");
 
         Unwrapped.Control atA = control(a.unwrap(atB.reply()));
-        assertEquals(ControlEvent.KEYS_AGREED, atA.event());
-        assertNull(atA.reply(), "a's key was echoed: nothing more to say");
+        assertEquals(ControlEvent.KEYS_AGREED, atA.event(), "b echoed a's value: fresh");
+        assertNotNull(atA.reply(), "a echoes b's value so that b can agree");
+
+        Unwrapped.Control atB2 = control(b.unwrap(atA.reply()));
+        assertEquals(ControlEvent.KEYS_AGREED, atB2.event());
+        Unwrapped.Control atA2 = control(a.unwrap(atB2.reply()));
+        assertEquals(ControlEvent.HANDSHAKE_REPEATED, atA2.event());
+        assertNull(atA2.reply(), "both agreed: nothing more to say");
 
         Unwrapped.Delivered d = assertInstanceOf(Unwrapped.Delivered.class, b.unwrap(a.wrapFor("uav-b", heartbeat)));
         assertEquals("uav-a", d.sender());
@@ -60,8 +69,10 @@ class SessionTest {
 
         byte[] replyFromB = control(b.unwrap(fromA)).reply();
         byte[] replyFromA = control(a.unwrap(fromB)).reply();
-        assertNull(control(a.unwrap(replyFromB)).reply());
-        assertNull(control(b.unwrap(replyFromA)).reply());
+        byte[] lastFromA = control(a.unwrap(replyFromB)).reply();
+        byte[] lastFromB = control(b.unwrap(replyFromA)).reply();
+        assertNull(control(b.unwrap(lastFromA)).reply());
+        assertNull(control(a.unwrap(lastFromB)).reply());
 
         assertInstanceOf(Unwrapped.Delivered.class, b.unwrap(a.wrapFor("uav-b", heartbeat)));
         assertInstanceOf(Unwrapped.Delivered.class, a.unwrap(b.wrapFor("uav-a", heartbeat)));
@@ -69,17 +80,19 @@ class SessionTest {
 
     @Test
     void lostReply_isRecoveredByARetry_withTheSameKeys() {
-        byte[] hello = a.startHandshake("uav-b");
-        control(b.unwrap(hello));   // b's reply is lost
-        assertTrue(b.hasSession("uav-a"));
-        assertFalse(a.hasSession("uav-b"));
-        assertFalse(a.needsHandshake("uav-b"), "a retry waits for the retry interval");
+        byte[] offer = control(b.unwrap(a.startHandshake("uav-b"))).reply();
+        control(a.unwrap(offer));   // a agrees; its answer is lost
+        assertTrue(a.hasSession("uav-b"));
+        assertFalse(b.hasSession("uav-a"));
+        assertFalse(b.needsHandshake("uav-a"), "a retry waits for the retry interval");
 
         team.clock.advance(1_000);
-        assertTrue(a.needsHandshake("uav-b"));
-        Unwrapped.Control again = control(b.unwrap(a.startHandshake("uav-b")));
-        assertEquals(ControlEvent.HANDSHAKE_REPEATED, again.event(), "b's session stands");
-        control(a.unwrap(again.reply()));
+        assertTrue(b.needsHandshake("uav-a"));
+        Unwrapped.Control again = control(a.unwrap(b.startHandshake("uav-a")));
+        assertEquals(ControlEvent.HANDSHAKE_REPEATED, again.event(), "a's session stands");
+        Unwrapped.Control atB = control(b.unwrap(again.reply()));
+        assertEquals(ControlEvent.KEYS_AGREED, atB.event(), "a's answer to b's retry echoes b's value");
+        assertNull(control(a.unwrap(atB.reply())).reply(), "a answered within the retry interval: done");
 
         assertInstanceOf(Unwrapped.Delivered.class, b.unwrap(a.wrapFor("uav-b", heartbeat)));
         assertInstanceOf(Unwrapped.Delivered.class, a.unwrap(b.wrapFor("uav-a", heartbeat)));
@@ -91,10 +104,50 @@ class SessionTest {
         team.clock.advance(5);
         SecureEndpoint bAgain = team.endpoint(b.identity);
 
-        assertEquals(2, Team.shakeHands(bAgain, a));
+        assertEquals(4, Team.shakeHands(bAgain, a));
 
         assertInstanceOf(Unwrapped.Delivered.class, bAgain.unwrap(a.wrapFor("uav-b", heartbeat)));
         assertInstanceOf(Unwrapped.Delivered.class, a.unwrap(bAgain.wrapFor("uav-a", heartbeat)));
+    }
+
+    @Test
+    void aReplayedHandshake_neverAgreesKeys_withARestartedVehicle_whoStillJoins() {
+        List<byte[]> fromA = new ArrayList<>();
+        byte[] next = a.startHandshake("uav-b");
+        SecureEndpoint to = b;
+        while (next != null) {   // record a's side of a whole handshake
+            if (to == b) {
+                fromA.add(next);
+            }
+            next = ((Unwrapped.Control) to.unwrap(next)).reply();
+            to = to == a ? b : a;
+        }
+        team.clock.advance(50);
+        SecureEndpoint bAgain = team.endpoint(b.identity);   // b restarts: new values, no memory
+
+        for (byte[] recorded : fromA) {
+            Unwrapped u = bAgain.unwrap(recorded);
+            if (u instanceof Unwrapped.Control c) {
+                assertEquals(ControlEvent.HANDSHAKE_OFFERED, c.event(), "a replay agrees nothing");
+            }
+            assertFalse(bAgain.hasSession("uav-a"), "a replay sets up no session");
+        }
+
+        team.clock.advance(1_000);
+        assertTrue(Team.shakeHands(bAgain, a) > 0);
+        assertInstanceOf(Unwrapped.Delivered.class, bAgain.unwrap(a.wrapFor("uav-b", heartbeat)));
+        assertInstanceOf(Unwrapped.Delivered.class, a.unwrap(bAgain.wrapFor("uav-a", heartbeat)));
+    }
+
+    @Test
+    void aReplayedOrForgedOffer_leavesAnEstablishedSessionStanding() {
+        Team.shakeHands(a, b);
+        SecureEndpoint c = team.endpoint("uav-c");
+        team.clock.advance(5);
+        // a fresh HELLO from a third vehicle, and a's own HELLO re-sent: neither touches the a-b session
+        control(b.unwrap(c.startHandshake("uav-b")));
+        assertInstanceOf(Unwrapped.Delivered.class, b.unwrap(a.wrapFor("uav-b", heartbeat)));
+        assertInstanceOf(Unwrapped.Delivered.class, a.unwrap(b.wrapFor("uav-a", heartbeat)));
     }
 
     @Test

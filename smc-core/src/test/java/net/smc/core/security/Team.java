@@ -92,7 +92,7 @@ final class Team {
         }
         parts.add("team=" + (e.team == null ? "none" : e.team.id + "/" + new java.util.TreeMap<>(e.team.windows)));
         SecurityCounters c = e.counters();
-        parts.add("delivered=" + c.delivered() + ", agreed=" + c.keysAgreed() + ", repeated=" + c.hellosRepeated()
+        parts.add("delivered=" + c.delivered() + ", agreed=" + c.keysAgreed() + ", repeated=" + c.hellosRepeated() + ", offered=" + c.hellosOffered()
                 + ", teamKeys=" + c.teamKeysInstalled());
         return String.join("\n", parts);
     }

@@ -1,5 +1,9 @@
 package net.smc.policy.lang;
 
+import java.io.UncheckedIOException;
+import java.util.HashMap;
+import java.util.Map;
+
 /** Finds the text of a file named by {@code include "name"}. */
 @FunctionalInterface
 public interface IncludeResolver {
@@ -18,4 +22,27 @@ public interface IncludeResolver {
 
     /** A resolver for units that may not include anything. */
     IncludeResolver NONE = (name, from) -> null;
+
+    /**
+     * A resolver that asks {@code resolver} once per name and unit, and then answers the same again
+     * (a file found, not found, or unreadable): a unit checked once is given the same files when its
+     * statements are parsed again to be run, even if the files change in between.
+     */
+    static IncludeResolver remembering(IncludeResolver resolver) {
+        Map<String, Object> answers = new HashMap<>();
+        return (name, fromSource) -> {
+            Object answer = answers.computeIfAbsent(name + '\0' + fromSource, key -> {
+                try {
+                    Included found = resolver.resolve(name, fromSource);
+                    return found == null ? Boolean.FALSE : found;
+                } catch (UncheckedIOException e) {
+                    return e;
+                }
+            });
+            if (answer instanceof UncheckedIOException e) {
+                throw e;
+            }
+            return answer instanceof Included found ? found : null;
+        };
+    }
 }

@@ -6,8 +6,10 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Turns PonderTalk source text into tokens (smc-policy/PONDERTALK.md section 2). Lexical errors are added to
- * the given list and the lexer carries on, so one pass reports every error of a unit.
+ * Turns PonderTalk source text into tokens (smc-policy/PONDERTALK.md section 2), one at a time as
+ * the parser asks for them ({@link #next()}), so no list of a unit's tokens is ever held. Lexical
+ * errors are added to the given list and the lexer carries on, so one pass reports every error of
+ * a unit.
  */
 public final class Lexer {
     private static final String BINOP_CHARS = "!%&*+/-<=>?@\\~,";
@@ -17,32 +19,47 @@ public final class Lexer {
     private final String source;
     private final String text;
     private final List<SyntaxError> errors;
-    private final List<Token> tokens = new ArrayList<>();
+    /** The kind of the last token produced, or {@code null} before the first. */
+    private TokenKind last;
+    /** The token {@link #scanToken} produced, or {@code null} when it only reported an error. */
+    private Token scanned;
     private int index;
     private int line = 1;
     private int lineStart;
 
-    private Lexer(String source, String text, List<SyntaxError> errors) {
+    /** A lexer over {@code text}, named {@code source} in positions; errors are added to {@code errors}. */
+    Lexer(String source, String text, List<SyntaxError> errors) {
         this.source = source;
         this.text = text;
         this.errors = errors;
     }
 
-    /** Lexes a whole unit; the last token is always {@link TokenKind#EOF}. */
+    /** Lexes a whole unit into a list (for tests and tools); the last token is always {@link TokenKind#EOF}. */
     public static List<Token> tokenize(String source, String text, List<SyntaxError> errors) {
         Lexer lexer = new Lexer(source, text, errors);
-        lexer.run();
-        return lexer.tokens;
+        List<Token> tokens = new ArrayList<>();
+        Token t;
+        do {
+            t = lexer.next();
+            tokens.add(t);
+        } while (t.kind() != TokenKind.EOF);
+        return tokens;
     }
 
-    private void run() {
+    /** The next token; at the end, {@link TokenKind#EOF} (again on every later call). */
+    Token next() {
         while (true) {
             skipSpaceAndComments();
             if (index >= text.length()) {
-                tokens.add(new Token(TokenKind.EOF, "", null, pos(index)));
-                return;
+                last = TokenKind.EOF;
+                return new Token(TokenKind.EOF, "", null, pos(index));
             }
+            scanned = null;
             scanToken();
+            if (scanned != null) {
+                last = scanned.kind();
+                return scanned;
+            }
         }
     }
 
@@ -144,10 +161,10 @@ public final class Lexer {
 
     /** A leading '/' starts a path only where an operand is expected, not after one. */
     private boolean previousEndsOperand() {
-        if (tokens.isEmpty()) {
+        if (last == null) {
             return false;
         }
-        return switch (tokens.get(tokens.size() - 1).kind()) {
+        return switch (last) {
             case IDENT, PATH, STRING, NUMBER, BOOLEAN, RPAREN, RBRACKET -> true;
             default -> false;
         };
@@ -165,7 +182,7 @@ public final class Lexer {
         } else {
             String word = text.substring(start, index);
             if (word.equals("true") || word.equals("false")) {
-                tokens.add(new Token(TokenKind.BOOLEAN, word, Boolean.valueOf(word), at));
+                emit(new Token(TokenKind.BOOLEAN, word, Boolean.valueOf(word), at));
             } else {
                 add(TokenKind.IDENT, word, at);
             }
@@ -275,7 +292,7 @@ public final class Lexer {
     }
 
     private void addNumber(int start, SourcePos at, BigDecimal value) {
-        tokens.add(new Token(TokenKind.NUMBER, text.substring(start, index), value, at));
+        emit(new Token(TokenKind.NUMBER, text.substring(start, index), value, at));
     }
 
     private void scanString(SourcePos at) {
@@ -285,7 +302,8 @@ public final class Lexer {
             char c = text.charAt(index);
             if (c == '"') {
                 index++;
-                tokens.add(new Token(TokenKind.STRING, value.toString(), value.toString(), at));
+                String string = value.toString();
+                emit(new Token(TokenKind.STRING, string, string, at));
                 return;
             }
             if (c == '\\' && peek(1) == '"') {
@@ -303,8 +321,12 @@ public final class Lexer {
         errors.add(new SyntaxError(at, "unterminated string"));
     }
 
+    private void emit(Token token) {
+        scanned = token;
+    }
+
     private void add(TokenKind kind, String tokenText, SourcePos at) {
-        tokens.add(new Token(kind, tokenText, null, at));
+        emit(new Token(kind, tokenText, null, at));
     }
 
     static boolean isLetter(char c) {

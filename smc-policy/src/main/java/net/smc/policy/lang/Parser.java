@@ -4,11 +4,16 @@ import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Consumer;
 
 /**
  * Parses a PonderTalk unit into {@link Node}s (grammar: smc-policy/PONDERTALK.md section 3). The parser
  * recovers at statement boundaries, so one call reports every syntax error of the unit; it bounds
  * nesting so that no input can exhaust the stack.
+ *
+ * <p>It reads tokens from the {@link Lexer} as it needs them (one token of lookahead beyond the
+ * current one) and hands each top-level statement to a consumer as soon as it is parsed, so parsing
+ * holds neither a unit's tokens nor its tree: memory stays within the source text and one statement.
  */
 public final class Parser {
     /** Deepest nesting of parentheses, blocks, arrays and assignments accepted. */
@@ -20,22 +25,33 @@ public final class Parser {
     /** Longest chain of sends one expression may build (each send's receiver is the previous send). */
     public static final int MAX_EXPRESSION_DEPTH = 2000;
 
-    private final List<Token> tokens;
-    private final List<SyntaxError> errors;
+    private final Lexer lexer;
+    /** This file's lexical errors: listed before its parse errors, as if the file were lexed first. */
+    private final List<SyntaxError> lexErrors = new ArrayList<>();
+    /** This file's parse errors, and the errors of the files it includes, in order. */
+    private final List<SyntaxError> errors = new ArrayList<>();
+    /** Errors of the unit found before this file was reached (earlier files of an include chain). */
+    private final int errorsBefore;
     private final IncludeResolver includes;
     private final int includeDepth;
-    private int current;
+    private final Consumer<Node> statements;
+    private Token current;
+    /** The token after {@link #current}, once looked at; {@code null} before. */
+    private Token following;
     private int depth;
     /** Brackets opened and not yet closed by the tokens consumed so far. */
     private int open;
-    /** How deep each send built so far is (sends are built left to right, so receivers come first). */
+    /** How deep each send of the current statement is (sends are built left to right, so receivers come first). */
     private final java.util.IdentityHashMap<Node, Integer> sendDepths = new java.util.IdentityHashMap<>();
 
-    private Parser(List<Token> tokens, List<SyntaxError> errors, IncludeResolver includes, int includeDepth) {
-        this.tokens = tokens;
-        this.errors = errors;
+    private Parser(String source, String text, IncludeResolver includes, int includeDepth, int errorsBefore,
+                   Consumer<Node> statements) {
+        this.lexer = new Lexer(source, text, lexErrors);
         this.includes = includes;
         this.includeDepth = includeDepth;
+        this.errorsBefore = errorsBefore;
+        this.statements = statements;
+        this.current = lexer.next();
     }
 
     /** Parses a unit that may not include files. */
@@ -43,10 +59,27 @@ public final class Parser {
         return parse(source, text, IncludeResolver.NONE);
     }
 
-    /** Parses a unit; {@code include "file"} statements are resolved with {@code includes}. */
+    /**
+     * Checks a unit; {@code include "file"} statements are resolved with {@code includes} (each
+     * file once: the unit remembers what they gave). The unit keeps its text, not its tree: its
+     * statements are parsed again when they are asked for.
+     */
     public static Unit parse(String source, String text, IncludeResolver includes) {
-        List<SyntaxError> errors = new ArrayList<>();
-        List<Node> statements = parseInto(source, text, includes, 0, errors);
+        IncludeResolver remembered = IncludeResolver.remembering(includes);
+        List<SyntaxError> errors = parse(source, text, remembered, statement -> {
+        });
+        return new Unit(source, text, remembered, errors);
+    }
+
+    /**
+     * Parses a unit and gives each top-level statement, included files' statements in their place,
+     * to {@code statements} as soon as it is parsed; answers the syntax errors (at most
+     * {@link #MAX_ERRORS}, then one line that counts them all). An exception that
+     * {@code statements} throws ends the parse and passes through.
+     */
+    public static List<SyntaxError> parse(String source, String text, IncludeResolver includes,
+                                          Consumer<Node> statements) {
+        List<SyntaxError> errors = parseFile(source, text, includes, 0, 0, statements);
         if (errors.size() > MAX_ERRORS) {
             int all = errors.size();
             List<SyntaxError> shown = new ArrayList<>(errors.subList(0, MAX_ERRORS));
@@ -54,13 +87,17 @@ public final class Parser {
                     "too many syntax errors (" + all + "); only the first " + MAX_ERRORS + " are listed"));
             errors = shown;
         }
-        return new Unit(source, statements, errors);
+        return errors;
     }
 
-    private static List<Node> parseInto(String source, String text, IncludeResolver includes, int includeDepth,
-                                        List<SyntaxError> errors) {
-        List<Token> tokens = Lexer.tokenize(source, text, errors);
-        return new Parser(tokens, errors, includes, includeDepth).unit();
+    /** Parses one file of a unit; answers its lexical errors, then its parse errors and those of its includes. */
+    private static List<SyntaxError> parseFile(String source, String text, IncludeResolver includes, int includeDepth,
+                                               int errorsBefore, Consumer<Node> statements) {
+        Parser parser = new Parser(source, text, includes, includeDepth, errorsBefore, statements);
+        parser.unit();
+        List<SyntaxError> all = new ArrayList<>(parser.lexErrors);
+        all.addAll(parser.errors);
+        return all;
     }
 
     /** Thrown to abandon the current statement after an error has been recorded. */
@@ -73,14 +110,19 @@ public final class Parser {
         }
     }
 
-    private List<Node> unit() {
-        List<Node> statements = new ArrayList<>();
+    /** Errors of the unit so far. */
+    private int errorCount() {
+        return errorsBefore + lexErrors.size() + errors.size();
+    }
+
+    private void unit() {
         while (!check(TokenKind.EOF)) {
-            if (errors.size() > MAX_ERRORS) {
+            if (errorCount() > MAX_ERRORS) {
                 break;
             }
             try {
-                topStatement(statements);
+                sendDepths.clear();
+                topStatement();
                 if (!check(TokenKind.EOF)) {
                     expect(TokenKind.DOT, "'.' or a message");
                 }
@@ -91,22 +133,22 @@ public final class Parser {
                 synchronize();
             }
         }
-        return statements;
     }
 
-    private void topStatement(List<Node> statements) {
+    /** Parses one top-level statement (or include) and hands it on. */
+    private void topStatement() {
         Token first = peek();
         if (first.kind() == TokenKind.IDENT && first.text().equals("include")
-                && peekAt(1).kind() == TokenKind.STRING) {
+                && peekNext().kind() == TokenKind.STRING) {
             advance();
             Token name = advance();
-            include(name, statements);
+            include(name);
             return;
         }
-        statements.add(statement());
+        statements.accept(statement());
     }
 
-    private void include(Token name, List<Node> statements) {
+    private void include(Token name) {
         String file = (String) name.value();
         if (includeDepth >= MAX_INCLUDE_DEPTH) {
             throw error(name, "include nested deeper than " + MAX_INCLUDE_DEPTH + " levels (does a file include itself?)");
@@ -120,7 +162,8 @@ public final class Parser {
         if (included == null) {
             throw error(name, "cannot read '" + file + "': file not found");
         }
-        statements.addAll(parseInto(included.source(), included.text(), includes, includeDepth + 1, errors));
+        errors.addAll(parseFile(included.source(), included.text(), includes, includeDepth + 1, errorCount(),
+                statements));
     }
 
     /** Skips to just after the next '.' that ends a top-level statement, or to the end. */
@@ -137,7 +180,7 @@ public final class Parser {
         enter();
         try {
             Token first = peek();
-            if (peekAt(1).kind() == TokenKind.ASSIGN) {
+            if (peekNext().kind() == TokenKind.ASSIGN) {
                 if (first.kind() == TokenKind.IDENT) {
                     advance();
                     advance();
@@ -341,11 +384,15 @@ public final class Parser {
     }
 
     private Token peek() {
-        return tokens.get(current);
+        return current;
     }
 
-    private Token peekAt(int ahead) {
-        return tokens.get(Math.min(current + ahead, tokens.size() - 1));
+    /** The token after the current one. */
+    private Token peekNext() {
+        if (following == null) {
+            following = current.kind() == TokenKind.EOF ? current : lexer.next();
+        }
+        return following;
     }
 
     private boolean check(TokenKind kind) {
@@ -353,7 +400,7 @@ public final class Parser {
     }
 
     private Token advance() {
-        Token t = tokens.get(current);
+        Token t = current;
         switch (t.kind()) {
             case EOF -> {
                 return t;
@@ -363,7 +410,8 @@ public final class Parser {
             default -> {
             }
         }
-        current++;
+        current = following != null ? following : lexer.next();
+        following = null;
         return t;
     }
 

@@ -16,7 +16,7 @@ import java.nio.file.Path;
  * Reads PonderTalk source files: UTF-8 (a leading byte-order mark is skipped), or UTF-16 when the
  * file starts with a UTF-16 byte-order mark. Bytes that are not valid in that encoding are refused
  * with the byte offset and line of the first one; a file too large for a unit is refused before it
- * is read.
+ * is read. The text is decoded straight into its string (one copy beside the file's bytes).
  */
 public final class SourceFiles {
     private SourceFiles() {
@@ -51,15 +51,34 @@ public final class SourceFiles {
             charset = StandardCharsets.UTF_16LE;
             skip = 2;
         }
+        String text = new String(bytes, skip, bytes.length - skip, charset);
+        if (text.indexOf('\uFFFD') >= 0) {
+            checkStrictly(bytes, skip, charset);
+        }
+        return text;
+    }
+
+    /**
+     * Decodes again, strictly, when the lenient decoding put in a replacement character: either
+     * the bytes are invalid (refused, naming the first bad byte) or the text holds U+FFFD itself.
+     * Decodes in small pieces, so a large file is not copied again.
+     */
+    private static void checkStrictly(byte[] bytes, int skip, Charset charset) throws CharacterCodingException {
         CharsetDecoder decoder = charset.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPORT)
                 .onUnmappableCharacter(CodingErrorAction.REPORT);
         ByteBuffer in = ByteBuffer.wrap(bytes, skip, bytes.length - skip);
-        CharBuffer out = CharBuffer.allocate((int) Math.min(Integer.MAX_VALUE - 8,
-                (long) (in.remaining() * (double) decoder.maxCharsPerByte()) + 1));
-        CoderResult result = decoder.decode(in, out, true);
+        CharBuffer out = CharBuffer.allocate(8192);
+        CoderResult result;
+        do {
+            out.clear();
+            result = decoder.decode(in, out, true);
+        } while (result.isOverflow());
         if (!result.isError()) {
-            result = decoder.flush(out);
+            do {
+                out.clear();
+                result = decoder.flush(out);
+            } while (result.isOverflow());
         }
         if (result.isError()) {
             int at = in.position();
@@ -74,8 +93,6 @@ public final class SourceFiles {
                 }
             };
         }
-        out.flip();
-        return out.toString();
     }
 
     private static int lineOf(byte[] bytes, int offset) {

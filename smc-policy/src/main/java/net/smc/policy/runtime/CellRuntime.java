@@ -53,6 +53,8 @@ public final class CellRuntime {
     private boolean booting = true;
     private long attachCounter;
     private Integer exitStatus;
+    /** The status {@link #stop} gave, or -1; set from any thread, read by running executions. */
+    private volatile int stopStatus = -1;
 
     public CellRuntime(Config config) {
         this.config = config;
@@ -131,7 +133,7 @@ public final class CellRuntime {
      */
     public Runnable schedule(long delayMillis, Runnable task) {
         return config.scheduler().schedule(delayMillis, () -> {
-            if (exitStatus != null) {
+            if (exitStatus() != null) {
                 return;
             }
             try {
@@ -146,9 +148,32 @@ public final class CellRuntime {
         });
     }
 
-    /** The status {@code root exit} gave inside a scheduled task, or {@code null}. */
+    /** The status {@code root exit} gave inside a scheduled task, or that {@link #stop} gave, or {@code null}. */
     public Integer exitStatus() {
+        if (exitStatus == null && stopStatus >= 0) {
+            return stopStatus;
+        }
         return exitStatus;
+    }
+
+    /**
+     * Asks the cell to stop; callable from any thread (a signal handler's, say). Whatever the cell
+     * runs (a unit, an event's policies, a timer) ends within {@link Limits#CLOCK_CHECK_INTERVAL}
+     * sends or at its next top-level statement, as if {@code root exit: status} had run there, and
+     * nothing runs after it.
+     *
+     * @throws IllegalArgumentException when {@code status} is negative
+     */
+    public void stop(int status) {
+        if (status < 0) {
+            throw new IllegalArgumentException("stop status is " + status + "; it must be 0 or more");
+        }
+        stopStatus = status;
+    }
+
+    /** The status {@link #stop} gave, or -1 when the cell was not asked to stop. */
+    int stopStatus() {
+        return stopStatus;
     }
 
     /** The names {@code root load:} knows, sorted. */
@@ -327,7 +352,10 @@ public final class CellRuntime {
         }
     }
 
-    /** Parses a unit; syntax errors are reported. The file, when given, anchors includes and reads. */
+    /**
+     * Checks a unit; syntax errors are reported. The file, when given, anchors includes and reads.
+     * The unit keeps its text, not its tree: {@link #run} parses each statement again as it runs it.
+     */
     public Unit parse(String source, String text, Path file) {
         if (file != null) {
             files.put(source, file.toAbsolutePath().normalize());
@@ -336,7 +364,7 @@ public final class CellRuntime {
             SyntaxError tooLong = new SyntaxError(new SourcePos(source, 1, 1), "unit of " + text.length()
                     + " characters is longer than the limit of " + config.limits().maxUnitChars());
             report(new Diagnostic(tooLong.pos(), tooLong.message()));
-            return new Unit(source, List.of(), List.of(tooLong));
+            return Unit.refused(source, tooLong);
         }
         Unit unit = Parser.parse(source, text, this::resolveInclude);
         for (SyntaxError e : unit.errors()) {
@@ -356,8 +384,10 @@ public final class CellRuntime {
     }
 
     /**
-     * Runs a parsed unit (which must have no syntax errors) in a run of its own. A runtime error is
-     * reported and ends the unit; {@link ExitRequest} passes through.
+     * Runs a checked unit (which must have no syntax errors) in a run of its own, statement by
+     * statement: each is parsed, compiled and run in turn and then dropped, so a large unit never
+     * has its whole tree in memory. A runtime error is reported and ends the unit;
+     * {@link ExitRequest} passes through.
      *
      * @return the value of the last statement, or {@code null} when the unit failed
      */
@@ -365,7 +395,7 @@ public final class CellRuntime {
         Execution ex = newExecution();
         VariableFrame frame = new VariableFrame(ex, variables == null ? Map.of() : variables.values);
         try {
-            return interpreter.run(interpreter.compile(unit.statements()), frame);
+            return runStatements(unit, frame);
         } catch (PonderError e) {
             report(new Diagnostic(e.pos(), e.getMessage()));
             return null;
@@ -388,8 +418,14 @@ public final class CellRuntime {
             throw new PonderError("cannot run '" + source + "': " + unit.errors().size() + " syntax error"
                     + (unit.errors().size() == 1 ? "" : "s"));
         }
-        VariableFrame frame = new VariableFrame(ex, Map.of());
-        return interpreter.run(interpreter.compile(unit.statements()), frame);
+        return runStatements(unit, new VariableFrame(ex, Map.of()));
+    }
+
+    /** Runs a unit's statements in order in {@code frame}; answers the last one's value (nil for none). */
+    private Object runStatements(Unit unit, VariableFrame frame) {
+        Object[] last = {net.smc.policy.api.Nil.NIL};
+        unit.forEachStatement(statement -> last[0] = interpreter.run(statement, frame));
+        return last[0];
     }
 
     /** Reads the file or policy URI {@code name}, relative to the folder of {@code fromSource}. */

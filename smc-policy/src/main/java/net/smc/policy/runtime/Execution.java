@@ -37,7 +37,10 @@ public final class Execution {
         return source;
     }
 
-    /** Counts one send against the step limit, and every {@link Limits#CLOCK_CHECK_INTERVAL} sends reads the clock. */
+    /**
+     * Counts one send against the step limit, and every {@link Limits#CLOCK_CHECK_INTERVAL} sends
+     * reads the clock and looks whether the cell was asked to stop.
+     */
     void step() {
         long left = --stepsLeft;
         if (left < 0) {
@@ -45,6 +48,19 @@ public final class Execution {
         }
         if ((left & (Limits.CLOCK_CHECK_INTERVAL - 1)) == 0) {
             checkTime();
+            checkStop();
+        }
+    }
+
+    /**
+     * Ends the run when the cell was asked to stop ({@link CellRuntime#stop}).
+     *
+     * @throws ExitRequest with the status the stop gave
+     */
+    void checkStop() {
+        int status = runtime.stopStatus();
+        if (status >= 0) {
+            throw new ExitRequest(status);
         }
     }
 

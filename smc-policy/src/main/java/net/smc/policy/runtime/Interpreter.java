@@ -10,8 +10,8 @@ import net.smc.policy.lang.Node;
 import net.smc.policy.lang.SourcePos;
 
 /**
- * Runs PonderTalk: compiles the syntax tree of a unit into a tree of executable nodes (once), then
- * executes them. Sends go through per-site caches of the receiver's dispatch table; every send
+ * Runs PonderTalk: compiles each top-level statement's syntax tree into a tree of executable nodes
+ * just before it runs, and drops it after (blocks keep the code they were made from). Sends go through per-site caches of the receiver's dispatch table; every send
  * counts against the run's step limit, and managed-object targets pass authorisation when it is on.
  */
 public final class Interpreter {
@@ -28,19 +28,6 @@ public final class Interpreter {
     /** Executable code: one node of the compiled tree. */
     abstract static class Code {
         abstract Object exec(VariableFrame f);
-    }
-
-    /** Compiled statements of a unit. */
-    static final class Compiled {
-        final Code[] statements;
-
-        Compiled(Code[] statements) {
-            this.statements = statements;
-        }
-    }
-
-    Compiled compile(List<Node> statements) {
-        return new Compiled(compileAll(statements));
     }
 
     private Code[] compileAll(List<Node> nodes) {
@@ -110,13 +97,10 @@ public final class Interpreter {
         }
     }
 
-    /** Runs compiled statements in a frame; answers the last statement's value. */
-    Object run(Compiled unit, VariableFrame frame) {
-        Object value = Nil.NIL;
-        for (Code statement : unit.statements) {
-            value = statement.exec(frame);
-        }
-        return value;
+    /** Compiles and runs one top-level statement of a unit in the unit's frame; answers its value. */
+    Object run(Node statement, VariableFrame frame) {
+        frame.ex.checkStop();
+        return compile(statement).exec(frame);
     }
 
     /** Calls a block: binds its parameters to {@code args} (extra arguments are ignored). */

@@ -546,4 +546,17 @@ class LexerTest {
             assertNull(t.value(), t.toString());
         }
     }
+
+    @Test
+    void tokens_areLexedOnDemand_notAheadOfTheReader() {
+        List<SyntaxError> errors = new ArrayList<>();
+        Lexer lexer = new Lexer(SOURCE, "a b $", errors);
+
+        assertEquals("a", lexer.next().text());
+        assertEquals("b", lexer.next().text());
+        assertEquals(List.of(), errors, "the '$' after b is not read yet");
+        assertEquals(TokenKind.EOF, lexer.next().kind());
+        assertEquals(1, errors.size());
+        assertEquals(TokenKind.EOF, lexer.next().kind(), "the end answers EOF again");
+    }
 }

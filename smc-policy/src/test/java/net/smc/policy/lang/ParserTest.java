@@ -654,4 +654,39 @@ class ParserTest {
         assertEquals(List.of(new SyntaxError(new SourcePos("main.p2", 1, 16), "expected '.' or a message, found '3'")),
                 unit.errors());
     }
+
+    @Test
+    void eachStatement_isHandedOnAsSoonAsItIsParsed_beforeTheRestIsRead() {
+        List<String> seen = new ArrayList<>();
+        List<SyntaxError> errors = Parser.parse(SOURCE, "a := 1.\nb := 2.\nc $ d", IncludeResolver.NONE,
+                statement -> seen.add(show(statement) + " with " + seen.size() + " before"));
+
+        assertEquals(List.of("(a := 1) with 0 before", "(b := 2) with 1 before"), seen.subList(0, 2));
+        assertEquals(1, errors.size(), "the '$' is found after the first statements were handed on: " + errors);
+    }
+
+    @Test
+    void aCheckedUnit_keepsItsText_andGivesItsStatementsAgainOneByOne() {
+        Unit unit = parse("a := 1. b := a + 1. c");
+        List<String> shown = new ArrayList<>();
+
+        unit.forEachStatement(statement -> shown.add(show(statement)));
+
+        assertEquals(List.of("(a := 1)", "(b := (a + 1))", "c"), shown);
+        assertEquals(shown, unit.statements().stream().map(ParserTest::show).toList());
+    }
+
+    @Test
+    void anIncludedFile_isReadOnce_evenWhenTheStatementsAreGivenAgain() {
+        int[] reads = {0};
+        IncludeResolver counting = (name, from) -> {
+            reads[0]++;
+            return new IncludeResolver.Included(name, "x := " + reads[0] + ".");
+        };
+        Unit unit = Parser.parse(SOURCE, "include \"a.p2\". y", counting);
+
+        assertEquals(List.of("(x := 1)", "y"), unit.statements().stream().map(ParserTest::show).toList());
+        assertEquals(List.of("(x := 1)", "y"), unit.statements().stream().map(ParserTest::show).toList());
+        assertEquals(1, reads[0]);
+    }
 }

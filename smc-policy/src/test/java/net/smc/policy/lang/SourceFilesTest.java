@@ -40,6 +40,17 @@ class SourceFilesTest {
     }
 
     @Test
+    void aReplacementCharacterWrittenInTheFile_isText_notAnError() throws IOException {
+        Path file = dir.resolve("fffd.p2");
+        Files.writeString(file, "root print: \"a\uFFFDb\".\n");
+
+        cell.runFile(file);
+
+        assertEquals(List.of(), errors);
+        assertEquals(List.of("a\uFFFDb"), output);
+    }
+
+    @Test
     void utf16WithAByteOrderMark_andUtf8WithOne_areRead() throws IOException {
         Path le = dir.resolve("le.p2");
         Files.write(le, concat(new byte[] {(byte) 0xFF, (byte) 0xFE}, "root print: \"\u00e9t\u00e9\".".getBytes(StandardCharsets.UTF_16LE)));

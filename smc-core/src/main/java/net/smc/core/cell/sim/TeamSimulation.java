@@ -163,7 +163,7 @@ public final class TeamSimulation {
             case NONE -> raw;
             case IDEAL -> ideal.wrap(raw, identity(n.spec, mission.instanceName()).credential());
             case REAL -> new SecureTransport(raw, SecureEndpoint.builder(identity(n.spec, mission.instanceName()), trust, sim)
-                    .random(seeded(seed * 31 + n.address.port())).build());
+                    .random(seeded(seed * 31 + n.address.port() + 7919L * restarts)).build());
         };
         n.transport = raw;
         Cell.Builder b = Cell.builder(n.spec.id(), mission, n.spec.description())
@@ -318,6 +318,11 @@ public final class TeamSimulation {
     /** The acting commanders among live honest cells. */
     public List<Cell> commanders() {
         return cells().stream().filter(Cell::isActingCommander).toList();
+    }
+
+    /** Where {@code vehicle} is attached to the network. */
+    public Address address(String vehicle) {
+        return node(vehicle).address;
     }
 
     public InMemoryNetwork network() {

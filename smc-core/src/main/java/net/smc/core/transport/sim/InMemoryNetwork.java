@@ -106,6 +106,17 @@ public final class InMemoryNetwork {
         return attach(address);
     }
 
+    /**
+     * Puts a datagram on the air as an adversary does: it claims to come from {@code from} (a UDP
+     * source can be forged) and reaches {@code to} after {@code delayMillis}, past partitions, the
+     * radio and loss. Counted as delivered (or dropped on arrival) like any copy, and seen by observers.
+     */
+    public void inject(Address from, Address to, byte[] data, long delayMillis) {
+        Objects.requireNonNull(from, "from");
+        Objects.requireNonNull(to, "to");
+        scheduler.schedule(Math.max(0, delayMillis), () -> arrive(from, to, data.clone()));
+    }
+
     /** Cuts every link between a node of {@code sideA} and a node of {@code sideB}, both ways, until {@link #heal()}. */
     public void partition(Set<Address> sideA, Set<Address> sideB) {
         partitions.add(sideA, sideB);

@@ -22,6 +22,7 @@ import java.util.Objects;
 public final class StatusClient {
     /** Queries sent within one timeout: a lost query or reply costs a fraction of the time, not all of it. */
     static final int ATTEMPTS = 3;
+    private static final com.fasterxml.jackson.databind.ObjectMapper JSON = new com.fasterxml.jackson.databind.ObjectMapper();
     private static final int RECEIVE_BUFFER_BYTES = 2_048;
 
     private StatusClient() {
@@ -55,7 +56,7 @@ public final class StatusClient {
                 socket.send(new DatagramPacket(query, query.length, node));
                 sent++;
                 long attemptEnd = attempt == ATTEMPTS ? deadline : System.nanoTime() + timeout.toNanos() / ATTEMPTS;
-                String json = awaitReply(socket, buffer, Math.min(attemptEnd, deadline));
+                String json = awaitReply(socket, node, buffer, Math.min(attemptEnd, deadline));
                 if (json != null) {
                     return json;
                 }
@@ -65,8 +66,13 @@ public final class StatusClient {
                 + " within " + timeoutMillis + " ms (" + sent + " queries sent); is a node running there?");
     }
 
-    /** The JSON of the first status reply before {@code deadline} (a {@link System#nanoTime()}), or null. */
-    private static String awaitReply(DatagramSocket socket, byte[] buffer, long deadline) throws IOException {
+    /**
+     * The JSON of the first status reply from {@code node} before {@code deadline} (a {@link System#nanoTime()}),
+     * or null; datagrams from any other address are ignored.
+     *
+     * @throws IOException when the reply from {@code node} is not valid JSON
+     */
+    private static String awaitReply(DatagramSocket socket, InetSocketAddress node, byte[] buffer, long deadline) throws IOException {
         while (true) {
             long remainingMillis = (deadline - System.nanoTime()) / 1_000_000;
             if (remainingMillis < 1) {
@@ -79,10 +85,26 @@ public final class StatusClient {
             } catch (SocketTimeoutException e) {
                 return null;
             }
+            if (!node.equals(packet.getSocketAddress())) {
+                continue;   // not the node asked: anyone can send to this socket
+            }
             String json = StatusResponder.replyJson(packet.getData(), packet.getLength());
             if (json != null) {
-                return json;
+                return validJson(json, node);
             }
         }
+    }
+
+    private static String validJson(String json, InetSocketAddress node) throws IOException {
+        try (com.fasterxml.jackson.core.JsonParser parser = JSON.getFactory().createParser(json)) {
+            JSON.readTree(parser);
+            if (parser.nextToken() != null) {
+                throw new IOException("trailing data after the JSON value");
+            }
+        } catch (IOException e) {
+            throw new IOException("the status reply from " + node.getAddress().getHostAddress() + ":" + node.getPort()
+                    + " is not valid JSON (" + e.getMessage().lines().findFirst().orElse("") + "); not printed", e);
+        }
+        return json;
     }
 }

@@ -69,6 +69,9 @@ public final class StatusResponder extends ForwardingTransport {
     public static final int MAX_JSON_BYTES = MAX_DATAGRAM_BYTES - HEADER_BYTES;
     /** Replies allowed in any 1,000 ms, unless the constructor says otherwise. */
     public static final int DEFAULT_REPLIES_PER_SECOND = 20;
+    /** Replies one source address may get in any 1,000 ms, unless the constructor says otherwise. */
+    public static final int DEFAULT_REPLIES_PER_SOURCE = 4;
+    private static final int MAX_SOURCES = 1024;
 
     private static final long WINDOW_MILLIS = 1_000;
 
@@ -77,6 +80,9 @@ public final class StatusResponder extends ForwardingTransport {
     /** When each of the last replies went out, oldest at {@link #next}; {@code Long.MIN_VALUE} for none. */
     private final long[] replyTimes;
     private int next;
+    private final int perSource;
+    /** Per source address, when its last replies went out (a ring of {@link #perSource}). */
+    private final Map<Address, long[]> sourceTimes = new java.util.HashMap<>();
     private Receiver receiver;
     private volatile long answered;
     private volatile long refused;
@@ -91,7 +97,7 @@ public final class StatusResponder extends ForwardingTransport {
      * @param view the cell's view as JSON, asked for once per answered query on the cell's thread
      */
     public StatusResponder(Transport inner, Supplier<String> view) {
-        this(inner, view, new SystemClock(), DEFAULT_REPLIES_PER_SECOND);
+        this(inner, view, new SystemClock(), DEFAULT_REPLIES_PER_SECOND, DEFAULT_REPLIES_PER_SOURCE);
     }
 
     /**
@@ -102,7 +108,27 @@ public final class StatusResponder extends ForwardingTransport {
      * @param repliesPerSecond  replies allowed in any 1,000 ms, at least 1
      */
     public StatusResponder(Transport inner, Supplier<String> view, Clock clock, int repliesPerSecond) {
+        this(inner, view, clock, repliesPerSecond, repliesPerSecond);
+    }
+
+    /**
+     * Wraps {@code inner}, whose receiver it takes from now on.
+     *
+     * @param view              the cell's view as JSON, asked for once per answered query on the cell's thread
+     * @param clock             the time the rate limits are measured in
+     * @param repliesPerSecond  replies allowed in any 1,000 ms in all, at least 1
+     * @param perSource         replies one source address may get in any 1,000 ms, 1 to {@code repliesPerSecond}:
+     *                          one flooding source cannot take every reply
+     */
+    public StatusResponder(Transport inner, Supplier<String> view, Clock clock, int repliesPerSecond, int perSource) {
         super(inner);
+        if (repliesPerSecond < 1) {
+            throw new IllegalArgumentException("repliesPerSecond is " + repliesPerSecond + "; it must be 1 or more");
+        }
+        if (perSource < 1 || perSource > repliesPerSecond) {
+            throw new IllegalArgumentException("perSource is " + perSource + "; it must be 1 to repliesPerSecond (" + repliesPerSecond + ")");
+        }
+        this.perSource = perSource;
         this.view = Objects.requireNonNull(view, "view");
         this.clock = Objects.requireNonNull(clock, "clock");
         if (repliesPerSecond < 1) {
@@ -111,6 +137,11 @@ public final class StatusResponder extends ForwardingTransport {
         this.replyTimes = new long[repliesPerSecond];
         Arrays.fill(replyTimes, Long.MIN_VALUE);
         inner.setReceiver(this::onDatagram);
+    }
+
+    /** Whether {@code datagram} starts as a status query does: for a transport that hands queries to the cell first. */
+    public static boolean looksLikeQuery(byte[] datagram) {
+        return startsWith(datagram, datagram.length, QUERY_MAGIC);
     }
 
     /** The query datagram a client sends: magic and version. */
@@ -171,7 +202,7 @@ public final class StatusResponder extends ForwardingTransport {
             malformed++;
             LOG.debug("status query from {} refused as malformed: {} bytes, version byte {}", from, data.length,
                     data.length > QUERY_MAGIC.length ? data[QUERY_MAGIC.length] : "missing");
-        } else if (!takeReplySlot()) {
+        } else if (!takeReplySlot(from)) {
             refused++;
         } else {
             answered++;   // before the send, so whoever gets the reply sees it counted
@@ -188,13 +219,31 @@ public final class StatusResponder extends ForwardingTransport {
         receiver.onDatagram(from, data);
     }
 
-    /** Whether a reply may go now: fewer than the limit went out in the last second. Takes the slot if so. */
-    private boolean takeReplySlot() {
+    /**
+     * Whether a reply may go now to {@code from}: fewer than the limit went out in the last second,
+     * and fewer than the per-source limit to {@code from}. Takes both slots if so.
+     */
+    private boolean takeReplySlot(Address from) {
         long now = clock.nowMillis();
         long oldest = replyTimes[next];
         if (oldest != Long.MIN_VALUE && now - oldest < WINDOW_MILLIS) {
             return false;
         }
+        long[] mine = sourceTimes.get(from);
+        if (mine == null) {
+            if (sourceTimes.size() >= MAX_SOURCES) {
+                sourceTimes.values().removeIf(t -> Arrays.stream(t).allMatch(x -> x == Long.MIN_VALUE || now - x >= WINDOW_MILLIS));
+            }
+            mine = new long[perSource + 1];   // the last slot is the ring's next index
+            Arrays.fill(mine, 0, perSource, Long.MIN_VALUE);
+            sourceTimes.put(from, mine);
+        }
+        int at = (int) mine[perSource];
+        if (mine[at] != Long.MIN_VALUE && now - mine[at] < WINDOW_MILLIS) {
+            return false;   // this source had its share of the last second
+        }
+        mine[at] = now;
+        mine[perSource] = (at + 1) % perSource;
         replyTimes[next] = now;
         next = (next + 1) % replyTimes.length;
         return true;

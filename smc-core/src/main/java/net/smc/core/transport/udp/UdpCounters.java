@@ -14,8 +14,10 @@ package net.smc.core.transport.udp;
  * @param droppedNoReceiver     datagrams that arrived before a receiver was set
  * @param droppedClosed         datagrams that reached the cell's thread after close
  * @param droppedRejected       datagrams the cell's executor refused (it was shut down)
+ * @param droppedBacklog        non-urgent datagrams dropped because too many already waited for the cell
+ *                              ({@link UdpTransport#setUrgent})
  */
 public record UdpCounters(long sent, long broadcastsSent, long sendFailures, long refusedOversize, long delivered,
                           long ownBroadcastsFiltered, long droppedOversize, long droppedNoReceiver,
-                          long droppedClosed, long droppedRejected) {
+                          long droppedClosed, long droppedRejected, long droppedBacklog) {
 }

@@ -14,10 +14,11 @@ final class UdpStats {
     final LongAdder droppedNoReceiver = new LongAdder();
     final LongAdder droppedClosed = new LongAdder();
     final LongAdder droppedRejected = new LongAdder();
+    final LongAdder droppedBacklog = new LongAdder();
 
     UdpCounters snapshot() {
         return new UdpCounters(sent.sum(), broadcastsSent.sum(), sendFailures.sum(), refusedOversize.sum(),
                 delivered.sum(), ownBroadcastsFiltered.sum(), droppedOversize.sum(), droppedNoReceiver.sum(),
-                droppedClosed.sum(), droppedRejected.sum());
+                droppedClosed.sum(), droppedRejected.sum(), droppedBacklog.sum());
     }
 }

@@ -195,6 +195,16 @@ public final class UdpTransport implements Transport {
         }
     }
 
+    /**
+     * Picks the datagrams the cell gets first: those {@code urgent} accepts (called on the event
+     * loop, for every datagram: it must be cheap, e.g. look at a kind byte) are delivered before any
+     * other; the others wait in a bounded queue and are dropped (counted as {@code droppedBacklog})
+     * when it is full. Until this is called every datagram is urgent, in one unbounded lane.
+     */
+    public void setUrgent(java.util.function.Predicate<byte[]> urgent) {
+        inbox.setUrgent(Objects.requireNonNull(urgent, "urgent"));
+    }
+
     /** Closes both channels and, if this transport made it, its event loop. Closing again does nothing. */
     @Override
     public void close() {

@@ -37,6 +37,41 @@ class StatusOverUdpTest {
         cell.shutdownNow();
     }
 
+    /** A fake node on its own socket: answers each query with {@code reply}; another socket answers first with a valid view. */
+    private static String askFake(byte[] reply) throws Exception {
+        try (DatagramSocket node = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0));
+             DatagramSocket other = new DatagramSocket(new InetSocketAddress("127.0.0.1", 0))) {
+            Thread answerer = new Thread(() -> {
+                try {
+                    DatagramPacket q = new DatagramPacket(new byte[64], 64);
+                    node.receive(q);
+                    byte[] forged = "SMC!STAT\u0001{\"forged\":true}".getBytes(UTF_8);
+                    other.send(new DatagramPacket(forged, forged.length, q.getSocketAddress()));   // not the node asked
+                    node.send(new DatagramPacket(reply, reply.length, q.getSocketAddress()));
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                }
+            });
+            answerer.start();
+            try {
+                return StatusClient.query((InetSocketAddress) node.getLocalSocketAddress(), Duration.ofSeconds(5));
+            } finally {
+                answerer.join(10_000);
+            }
+        }
+    }
+
+    @Test
+    void theClientTakesAnAnswerOnlyFromTheAddressItAsked() throws Exception {
+        assertEquals("{\"id\":\"real\"}", askFake("SMC!STAT\u0001{\"id\":\"real\"}".getBytes(UTF_8)));
+    }
+
+    @Test
+    void anAnswerThatIsNotValidJson_isAClearError() {
+        IOException e = assertThrows(IOException.class, () -> askFake("SMC!STAT\u0001{\"id\": oops".getBytes(UTF_8)));
+        assertTrue(e.getMessage().contains("is not valid JSON"), e.getMessage());
+    }
+
     @Test
     void query_returnsTheViewOfTheNode() throws Exception {
         udp = UdpTransport.open(settings, cell);

@@ -149,6 +149,25 @@ class StatusResponderTest {
     }
 
     @Test
+    void oneFloodingSource_getsItsShareOnly_andOthersAreStillAnswered() {
+        StatusResponder responder = new StatusResponder(cellSide, () -> VIEW, scheduler, 20, 4);
+        Transport flooder = network.attach(Address.loopback(4666));
+        List<byte[]> realAnswers = new ArrayList<>();
+        for (int ms = 0; ms < 1_000; ms++) {   // 1,000 queries a second from one source
+            flooder.send(cellSide.localAddress(), StatusResponder.query());
+            if (ms % 100 == 50) {   // 10 real queries, from 10 tools
+                Transport tool = network.attach(Address.loopback(5000 + ms));
+                tool.setReceiver((from, data) -> realAnswers.add(data));
+                tool.send(cellSide.localAddress(), StatusResponder.query());
+            }
+            scheduler.runUntil(scheduler.nowMillis() + 1);
+        }
+        scheduler.runUntilIdle(10_000);
+        assertEquals(10, realAnswers.size(), "every real query answered");
+        assertTrue(responder.answered() <= 10 + 4 + 4, "the flooder got its share only: " + responder.answered());
+    }
+
+    @Test
     void repliesOverTheRate_areRefusedAndCounted_untilASecondHasPassed() {
         StatusResponder responder = responder(() -> VIEW, 3);
 
