@@ -19,6 +19,7 @@ import net.smc.core.message.Identity;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.mission.RoleInterface;
+import net.smc.core.role.RoleLoadException;
 import net.smc.core.role.Caller;
 import net.smc.core.role.ExternalGateway;
 import net.smc.core.role.ExternalInterface;
@@ -127,7 +128,7 @@ public final class Cell {
             }
 
             @Override
-            public void loadRole(String role, PolicyStore from) {
+            public void loadRole(String role, PolicyStore from) throws RoleLoadException {
                 roles.load(roleOf(role, from));
             }
 

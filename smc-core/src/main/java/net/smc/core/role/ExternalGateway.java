@@ -4,9 +4,9 @@ import java.util.List;
 import java.util.Objects;
 import net.smc.core.role.ExternalCallException.Kind;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.EventTemplate;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.EventHandle;
+import net.smc.policy.api.Handle;
 import net.smc.policy.api.PonderError;
 
 /**
@@ -44,7 +44,7 @@ public final class ExternalGateway {
         Object receiver;
         String what;
         if (ExternalInterface.MANAGEMENT_OPERATIONS.contains(selector)) {
-            receiver = object;
+            receiver = object.domain();
             what = "management operation '" + selector + "' of role '" + role + "'";
         } else {
             TaskOperation exported = object.role().external().exportedOperation(selector);
@@ -74,8 +74,8 @@ public final class ExternalGateway {
                     + "' is not required by role '" + role + "', so other roles may not raise it there (it requires "
                     + object.role().external().requiredEvents() + ")");
         }
-        Object template = roles.cell().root().get("event") instanceof Domain events ? events.get(event) : null;
-        if (!(template instanceof EventTemplate)) {
+        Object template = roles.cell().root().get("event") instanceof DomainHandle events ? events.get(event) : null;
+        if (!(template instanceof EventHandle)) {
             throw new ExternalCallException(Kind.FAILED, "event '" + event + "' required by role '" + role
                     + "' has no template at root/event/" + event);
         }
@@ -95,7 +95,7 @@ public final class ExternalGateway {
             throw new ExternalCallException(Kind.FAILED, what + " has no receiver: its task is missing from root/role/"
                     + object.role().name() + "/task");
         }
-        ManagedObject subject = peer(object, caller);
+        Handle subject = peer(object, caller);
         try {
             return roles.cell().sendAs(subject, receiver, selector, args);
         } catch (PonderError e) {
@@ -110,21 +110,21 @@ public final class ExternalGateway {
     }
 
     /** The caller's subject, made on its first call; it lives as long as the role. */
-    private ManagedObject peer(RoleObject object, Caller caller) {
-        Domain peers = object.part(RoleObject.PEERS);
+    private Handle peer(RoleObject object, Caller caller) {
+        DomainHandle peers = object.part(RoleObject.PEERS);
         Object ofRole = peers.get(caller.role());
         if (ofRole == null) {
-            ofRole = new Domain(roles.cell().runtime());
+            ofRole = roles.cell().newDomain();
             peers.put(caller.role(), ofRole);
         }
-        if (!(ofRole instanceof Domain callers)) {
+        if (!(ofRole instanceof DomainHandle callers)) {
             throw new ExternalCallException(Kind.FAILED, "root/role/" + object.role().name() + "/peers/" + caller.role()
                     + " is not a domain; it must hold the subjects of role '" + caller.role() + "'");
         }
-        if (callers.get(caller.cell()) instanceof ManagedObject existing) {
+        if (callers.get(caller.cell()) instanceof Handle existing) {
             return existing;
         }
-        ManagedObject subject = ManagedObject.wrap(new Peer(caller));
+        Handle subject = PolicyEngine.manage(new Peer(caller));
         callers.put(caller.cell(), subject);
         return subject;
     }

@@ -12,7 +12,6 @@ import java.util.function.Consumer;
 
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
-import net.smc.core.cell.sim.TeamSimulation;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.Address;
@@ -21,6 +20,7 @@ import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.experiment.GeneratedMission;
 import net.smc.sim.experiment.MissionGenerator;
 import net.smc.sim.experiment.TreeShape;
+import net.smc.sim.team.TeamSimulation;
 
 /**
  * A team of {@code size} vehicles for the scalability benchmarks: the mission of
