@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 
+import net.smc.core.mission.ManagementTree;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
 
@@ -35,6 +36,7 @@ import net.smc.core.mission.MissionRole;
 public final class Slots {
     private final Mission mission;
     private final Scheme scheme;
+    private final ManagementTree tree;   // Mission.tree() builds and checks it anew on every call
     private final List<String> order;
     private final Map<String, Integer> rank = new HashMap<>();
     private final Map<String, Integer> offset = new HashMap<>();
@@ -42,7 +44,8 @@ public final class Slots {
     public Slots(Mission mission, Scheme scheme) {
         this.mission = mission;
         this.scheme = scheme;
-        this.order = mission.tree().breadthFirst();
+        this.tree = mission.tree();
+        this.order = tree.breadthFirst();
         int next = 1;
         for (int i = 0; i < order.size(); i++) {
             String role = order.get(i);
@@ -100,7 +103,7 @@ public final class Slots {
         if (role.equals(Mission.COMMANDER)) {
             return 0;
         }
-        return scheme == Scheme.CENTRALISED ? 1 : mission.tree().depthOf(role);
+        return scheme == Scheme.CENTRALISED ? 1 : tree.depthOf(role);
     }
 
     /** The sequence number of a seat: unique within the mission. */
@@ -113,7 +116,7 @@ public final class Slots {
         if (role.equals(Mission.COMMANDER)) {
             return Optional.empty();
         }
-        return scheme == Scheme.CENTRALISED ? Optional.of(Mission.COMMANDER) : mission.tree().parentOf(role);
+        return scheme == Scheme.CENTRALISED ? Optional.of(Mission.COMMANDER) : tree.parentOf(role);
     }
 
     /** The seat that owns {@code seat}, or empty for the commander's. */
@@ -126,7 +129,7 @@ public final class Slots {
         if (scheme == Scheme.CENTRALISED) {
             return role.equals(Mission.COMMANDER) ? order.subList(1, order.size()) : List.of();
         }
-        return mission.tree().childrenOf(role);
+        return tree.childrenOf(role);
     }
 
     /** The seats owned by the seat {@code manager}. */

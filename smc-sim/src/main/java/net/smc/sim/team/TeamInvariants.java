@@ -10,6 +10,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 
+import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.Seat;
@@ -51,6 +52,8 @@ public final class TeamInvariants {
     private final long mergeBoundMillis;
     private final Map<String, Long> metSince = new HashMap<>();
     private final Map<String, Long> danglingSince = new HashMap<>();
+    /** Each vehicle's capability description: made once, a vehicle's kit never changes. */
+    private final Map<String, CapabilityDescription> descriptions = new HashMap<>();
     private long checks;
 
     TeamInvariants(TeamSimulation sim, long mergeBoundMillis) {
@@ -96,7 +99,8 @@ public final class TeamInvariants {
         for (Map.Entry<String, List<Cell>> team : teams.entrySet()) {
             Map<Seat, String> holders = new HashMap<>();
             for (Cell c : team.getValue()) {
-                SimVehicle v = sim.vehicle(c.vehicle());
+                CapabilityDescription description = descriptions.computeIfAbsent(c.vehicle(),
+                        id -> sim.vehicle(id).description());
                 for (Seat s : c.seats()) {
                     String other = holders.put(s, c.vehicle());
                     if (other != null) {
@@ -107,8 +111,8 @@ public final class TeamInvariants {
                         fail(c.vehicle() + " holds " + s + " beyond the optimal cardinality of " + s.role());
                     }
                     MissionRole role = mission.role(s.role()).orElseThrow();
-                    if (!role.requirement().isMetBy(v.description())) {
-                        fail(c.vehicle() + " holds " + s + " but lacks " + role.requirement().missingFrom(v.description())
+                    if (!role.requirement().isMetBy(description)) {
+                        fail(c.vehicle() + " holds " + s + " but lacks " + role.requirement().missingFrom(description)
                                 .describe());
                     }
                 }
@@ -126,8 +130,9 @@ public final class TeamInvariants {
     /** Attached cells by the acting commander they hang from. */
     static Map<String, List<Cell>> teams(List<Cell> cells, Map<String, Cell> byId) {
         Map<String, List<Cell>> teams = new TreeMap<>();
+        Map<String, Set<String>> listed = new HashMap<>();
         for (Cell c : cells) {
-            root(c, byId).ifPresent(r -> teams.computeIfAbsent(r, k -> new ArrayList<>()).add(c));
+            root(c, byId, listed).ifPresent(r -> teams.computeIfAbsent(r, k -> new ArrayList<>()).add(c));
         }
         return teams;
     }
@@ -136,7 +141,7 @@ public final class TeamInvariants {
      * The acting commander a cell is attached to, if it is attached: every cell on the way up holds
      * a live lease (not suspended) from a parent that lists it as a child.
      */
-    private static Optional<String> root(Cell c, Map<String, Cell> byId) {
+    private static Optional<String> root(Cell c, Map<String, Cell> byId, Map<String, Set<String>> listed) {
         Cell at = c;
         for (int depth = 0; depth < 64 && at != null; depth++) {
             if (at.isActingCommander()) {
@@ -146,12 +151,21 @@ public final class TeamInvariants {
                 return Optional.empty();
             }
             Cell parent = byId.get(at.parent().get());
-            if (parent == null || !parent.children().containsKey(at.vehicle())) {
+            if (parent == null || !lists(parent, at.vehicle(), listed)) {
                 return Optional.empty();
             }
             at = parent;
         }
         return Optional.empty();
+    }
+
+    /**
+     * Whether {@code parent} lists {@code child} among its children; {@code listed} keeps each
+     * parent's list for the rest of one check ({@link Cell#children()} builds a new map every call,
+     * and a check asks about every parent once per child and level).
+     */
+    private static boolean lists(Cell parent, String child, Map<String, Set<String>> listed) {
+        return listed.computeIfAbsent(parent.vehicle(), v -> parent.children().keySet()).contains(child);
     }
 
     /**
@@ -162,12 +176,13 @@ public final class TeamInvariants {
         long now = sim.nowMillis();
         long bound = net.smc.core.cell.Timing.of(sim.mission()).leaseMillis() + 2 * number("comTimeout");
         Set<String> dangling = new HashSet<>();
+        Map<String, Set<String>> listed = new HashMap<>();
         for (Cell c : cells) {
             if (c.isActingCommander() || c.isSuspended() || c.parent().isEmpty()) {
                 continue;
             }
             Cell parent = byId.get(c.parent().get());
-            if (parent != null && parent.children().containsKey(c.vehicle())) {
+            if (parent != null && lists(parent, c.vehicle(), listed)) {
                 continue;
             }
             String key = c.vehicle() + "->" + c.parent().get();
