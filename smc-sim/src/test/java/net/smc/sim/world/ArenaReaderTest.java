@@ -59,6 +59,28 @@ class ArenaReaderTest {
     }
 
     @Test
+    void doctype_isRefusedAtItsPosition() {
+        String error = only("<?xml version='1.0'?>\n<!DOCTYPE world [<!ENTITY x SYSTEM 'file:///etc/passwd'>]>\n"
+                + "<world name='&x;' width='4' height='4'/>");
+        assertEquals("bad.xml:2:1: a DOCTYPE declaration is not allowed; a world file has no DTD (its format is "
+                + "missions/worlds/world.xsd), so remove <!DOCTYPE ...>", error);
+    }
+
+    @Test
+    void overlongAttribute_isRefusedWithItsElementAndLimit() {
+        String error = only("<world name='" + "x".repeat(5000) + "' width='4' height='4'>\n</world>");
+        assertEquals("bad.xml:1:1: <world>: attribute 'name' has 5000 characters; an attribute value may have at most "
+                + "4096", error);
+    }
+
+    @Test
+    void oversizedText_isRefusedUnparsed() {
+        String text = "<world name='x' width='4' height='4'>" + " ".repeat(1024 * 1024) + "</world>";
+        assertEquals("bad.xml:1:1: the text has " + text.length() + " characters; a world file may have at most "
+                + "1048576", only(text));
+    }
+
+    @Test
     void unknownElement_namesItsPlaceAndTheAllowedOnes() {
         String error = only("<world name='x' width='4' height='4'>\n<start id='s' x='1' y='1'/>\n  <tree x='1'/>\n</world>");
         assertEquals("bad.xml:3:3: <tree>: unexpected element in <world>; expected <wall>, <door>, <box>, "
