@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.List;
 
+import net.smc.sim.world.Worlds;
 import org.junit.jupiter.api.Test;
 
 class ArenaReaderTest {

@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -14,14 +14,14 @@ import net.smc.core.xml.XmlElement;
 import net.smc.core.xml.XmlLimits;
 import net.smc.core.xml.XmlReader;
 import net.smc.core.xml.XmlRefusal;
-import net.smc.sim.world.Arena.Box;
-import net.smc.sim.world.Arena.Cylinder;
-import net.smc.sim.world.Arena.Door;
-import net.smc.sim.world.Arena.Hazard;
-import net.smc.sim.world.Arena.Start;
-import net.smc.sim.world.Arena.Station;
-import net.smc.sim.world.Arena.Target;
-import net.smc.sim.world.Arena.Wall;
+import net.smc.sim.arena.Arena.Box;
+import net.smc.sim.arena.Arena.Cylinder;
+import net.smc.sim.arena.Arena.Door;
+import net.smc.sim.arena.Arena.Hazard;
+import net.smc.sim.arena.Arena.Start;
+import net.smc.sim.arena.Arena.Station;
+import net.smc.sim.arena.Arena.Target;
+import net.smc.sim.arena.Arena.Wall;
 
 /**
  * Reads a world file ({@code missions/worlds/*.xml}, schema {@code missions/worlds/world.xsd}) into
