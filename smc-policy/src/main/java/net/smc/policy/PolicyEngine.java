@@ -8,6 +8,7 @@ import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.DomainHandle;
 import net.smc.policy.api.EventHandle;
 import net.smc.policy.api.Handle;
+import net.smc.policy.api.TeamLink;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,6 +30,7 @@ import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.Execution;
 import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.runtime.TeamArrivals;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.runtime.Values;
 import net.smc.policy.stdlib.StandardObjects;
@@ -250,6 +252,20 @@ public final class PolicyEngine {
             exitStatus = exit.status();
             throw new PonderError("the cell has exited");
         }
+    }
+
+    /**
+     * Connects the cell's standard objects to the other cells of its team ({@code EventForwarder
+     * forwardTo: "/team/<cell>/<path>"}, {@code PonderTalk create: "/team/<cell>"}); the owner of a
+     * team cell sets it once, before the cell takes input.
+     */
+    public void teamLink(TeamLink link) {
+        runtime.teamLink(link);
+    }
+
+    /** Where events and PonderTalk text from other cells enter this cell, under its authorisation policies. */
+    public TeamArrivals arrivals() {
+        return new TeamArrivals(runtime);
     }
 
     /** A shell session: units whose variables persist from one to the next. */

@@ -1,6 +1,7 @@
 package net.smc.core.role;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import net.smc.core.role.ExternalCallException.Kind;
 import net.smc.policy.PolicyEngine;
@@ -80,6 +81,61 @@ public final class ExternalGateway {
                     + "' has no template at root/event/" + event);
         }
         send(caller, object, template, "create:", new Object[] {java.util.Arrays.asList(values)}, "event '" + event + "' of role '" + role + "'");
+    }
+
+    /**
+     * Raises (or sends as {@code selector}) at the object at {@code path} an event another cell's
+     * {@code EventForwarder} forwarded, with the caller's subject in the receiving role: the role
+     * the path lies in ({@code role/<role>/...}), else the cell's first role. This cell's
+     * authorisation policies decide (the action {@code forwardTo:} on the target, or the selector).
+     *
+     * @throws ExternalCallException when this cell holds no role, it is denied, or it fails
+     */
+    public void receiveEvent(Caller caller, String path, String selector, String event, Map<String, Object> attributes) {
+        RoleObject object = receiving(path);
+        String what = "event '" + event + "' forwarded to root/" + path;
+        try {
+            roles.cell().arrivals().receiveEvent(peer(object, caller), path, selector, event, attributes);
+        } catch (PonderError e) {
+            throw refused(caller, object, what, e);
+        }
+    }
+
+    /**
+     * Evaluates PonderTalk text another cell sent, with the caller's subject in the cell's first
+     * role, if an authorisation policy allows the action {@code evaluate:} on that role's domain.
+     *
+     * @return the value of its last statement ({@code printed}: its printed form)
+     * @throws ExternalCallException when this cell holds no role, it is denied, or it fails
+     */
+    public Object evaluate(Caller caller, String text, boolean printed) {
+        RoleObject object = receiving("");
+        try {
+            return roles.cell().arrivals().evaluate(peer(object, caller), object.domain(), "remote:" + caller.cell(), text, printed);
+        } catch (PonderError e) {
+            throw refused(caller, object, "evaluation of PonderTalk text", e);
+        }
+    }
+
+    private RoleObject receiving(String path) {
+        String[] parts = path.split("/");
+        if (parts.length >= 2 && parts[0].equals("role") && roles.roleObject(parts[1]) != null) {
+            return roles.roleObject(parts[1]);
+        }
+        for (String name : roles.loadedRoles()) {
+            return loaded(name);
+        }
+        throw new ExternalCallException(Kind.NO_SUCH_ROLE, "this cell holds no role, so no peer of it may act here");
+    }
+
+    private static ExternalCallException refused(Caller caller, RoleObject object, String what, PonderError e) {
+        if (e.getMessage() != null && e.getMessage().startsWith(DENIAL)) {
+            return new ExternalCallException(Kind.DENIED, "role '" + caller.role() + "' on cell '" + caller.cell()
+                    + "' may not cause " + what + ": denied by the authorisation policies of role '"
+                    + object.role().name() + "' (" + e.getMessage() + ")");
+        }
+        return new ExternalCallException(Kind.FAILED, what + ", from role '" + caller.role() + "' on cell '"
+                + caller.cell() + "', failed: " + e.getMessage());
     }
 
     private RoleObject loaded(String role) {

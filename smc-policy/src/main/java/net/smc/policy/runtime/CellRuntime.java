@@ -11,6 +11,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Consumer;
 import java.util.function.Function;
@@ -20,6 +21,7 @@ import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.Limits;
 import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.TeamLink;
 import net.smc.policy.api.TimerScheduler;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
@@ -57,6 +59,7 @@ public final class CellRuntime {
     private final List<Consumer<Diagnostic>> listeners = new ArrayList<>();
     private final List<Consumer<? super ManagedObject>> creationListeners = new ArrayList<>();
     private boolean booting = true;
+    private TeamLink teamLink = TeamLink.NONE;
     private long attachCounter;
     private Integer exitStatus;
     /** The status {@link #stop} gave, or -1; set from any thread, read by running executions. */
@@ -222,6 +225,15 @@ public final class CellRuntime {
 
     Authoriser authoriser() {
         return authoriser;
+    }
+
+    /** How the standard objects reach other cells of the team; {@code TeamLink.NONE} until the owner sets one. */
+    public TeamLink teamLink() {
+        return teamLink;
+    }
+
+    public void teamLink(TeamLink link) {
+        this.teamLink = Objects.requireNonNull(link, "link");
     }
 
     /** Whether boot units are still running (authorisation then defaults to allow). */
