@@ -30,11 +30,7 @@ class ArchitectureTest {
 
     /**
      * Violations the project still carries, listed so that the test fails on any new one and on any
-     * that is fixed (delete its line then). In smc-sim the world makes and steps its robots, and a
-     * robot reads the world (its arena, hazards, ray casts): splitting the arena's data from the
-     * stepped world would break it.
+     * that is fixed (delete its line then).
      */
-    private static final List<String> KNOWN_DEBT = List.of(
-            "package cycle: net.smc.sim.robot -> net.smc.sim.world (smc-sim/src/main/java/net/smc/sim/robot/ChemicalNose.java),"
-                    + " net.smc.sim.world -> net.smc.sim.robot (smc-sim/src/main/java/net/smc/sim/world/SimWorld.java)");
+    private static final List<String> KNOWN_DEBT = List.of();
 }

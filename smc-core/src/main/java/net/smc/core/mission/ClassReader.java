@@ -8,6 +8,7 @@ import net.smc.core.capability.CapabilityRequirement;
 import net.smc.core.mission.ClassSpec.ParamDecl;
 import net.smc.core.mission.ClassSpec.Ref;
 import net.smc.core.mission.ClassSpec.RoleDecl;
+import net.smc.core.xml.XmlElement;
 
 /**
  * Reads the structure of a mission class file (the paper's Table III, extended with requirements

@@ -13,6 +13,7 @@ import net.smc.core.mission.ClassSpec.ParallelDecl;
 import net.smc.core.mission.ClassSpec.Ref;
 import net.smc.core.mission.ClassSpec.RoleDecl;
 import net.smc.core.mission.ClassSpec.SecondaryDecl;
+import net.smc.core.xml.XmlElement;
 
 /**
  * The rules a mission class's names must follow together: managed roles exist, management forms a

@@ -2,6 +2,7 @@ package net.smc.core.mission;
 
 import java.util.List;
 import net.smc.core.capability.CapabilityRequirement;
+import net.smc.core.xml.XmlElement;
 
 /**
  * A mission class file as read (level 2), before its rules are checked: every name still carries

@@ -8,6 +8,7 @@ import net.smc.core.mission.ClassSpec.ExclusiveDecl;
 import net.smc.core.mission.ClassSpec.ParallelDecl;
 import net.smc.core.mission.ClassSpec.Ref;
 import net.smc.core.mission.ClassSpec.SecondaryDecl;
+import net.smc.core.xml.XmlElement;
 
 /**
  * Reads a mission class's {@code <constraints>}: cardinality bounds and colocation rules, each an

@@ -9,6 +9,7 @@ import net.smc.core.mission.ClassSpec.Ref;
 import net.smc.core.mission.InstanceSpec.Cardinality;
 import net.smc.core.mission.InstanceSpec.ParamValue;
 import net.smc.core.mission.InstanceSpec.RoleEntry;
+import net.smc.core.xml.XmlElement;
 
 /**
  * Reads the structure of a mission instance file and checks what it can alone: required sections,

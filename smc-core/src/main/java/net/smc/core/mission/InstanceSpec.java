@@ -2,6 +2,7 @@ package net.smc.core.mission;
 
 import java.util.List;
 import net.smc.core.mission.ClassSpec.Ref;
+import net.smc.core.xml.XmlElement;
 
 /**
  * A mission instance file as read (level 3), before it is checked against its class.

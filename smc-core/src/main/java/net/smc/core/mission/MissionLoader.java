@@ -15,6 +15,10 @@ import net.smc.core.mission.ClassSpec.ParamDecl;
 import net.smc.core.mission.ClassSpec.Ref;
 import net.smc.core.mission.ClassSpec.RoleDecl;
 import net.smc.core.mission.InstanceSpec.RoleEntry;
+import net.smc.core.xml.XmlElement;
+import net.smc.core.xml.XmlLimits;
+import net.smc.core.xml.XmlReader;
+import net.smc.core.xml.XmlRefusal;
 import net.smc.policy.api.PolicyRepository;
 
 /**
@@ -43,7 +47,10 @@ public final class MissionLoader {
 
     private final PolicyRepository repository;
     private final List<Path> allowedDirs;
-    private final XmlReader xml = new XmlReader();
+    /** The text of an element, or an attribute value, of a mission file has at most 4096 characters. */
+    private static final XmlLimits LIMITS = new XmlLimits(MAX_FILE_BYTES, 4096, 4096);
+
+    private final XmlReader xml = new XmlReader("mission file", "missions/*.xsd", LIMITS);
 
     /**
      * A loader that resolves policy URIs in {@code repository}; a class {@code href} must name a
@@ -70,11 +77,11 @@ public final class MissionLoader {
      *                          file is an error of the instance, reported in a MissionException)
      */
     public Mission load(Path instanceFile) throws MissionException, IOException {
-        String text = readBounded(instanceFile);
+        String text = xml.readFile(instanceFile);
         List<MissionError> instanceErrors = new ArrayList<>();
         List<MissionError> classErrors = new ArrayList<>();
         Reporter reporter = new Reporter(instanceFile, instanceErrors);
-        XmlElement root = xml.read(text, reporter);
+        XmlElement root = parse(text, reporter);
         InstanceSpec instance = root == null ? null : InstanceReader.read(root, reporter);
         ClassSpec spec = instance == null ? null : readClass(instanceFile, instance, reporter, classErrors);
         if (instance != null) {
@@ -113,7 +120,7 @@ public final class MissionLoader {
         String text = null;
         if (problem == null) {
             try {
-                text = readBounded(classFile);
+                text = xml.readFile(classFile);
             } catch (IOException e) {
                 problem = String.valueOf(e.getMessage());
             }
@@ -124,7 +131,7 @@ public final class MissionLoader {
             return null;
         }
         Reporter classReporter = new Reporter(classFile, errors);
-        XmlElement root = xml.read(text, classReporter);
+        XmlElement root = parse(text, classReporter);
         ClassSpec spec = root == null ? null : ClassReader.read(root, classReporter);
         if (spec != null) {
             ClassRules.check(spec, classReporter);
@@ -158,14 +165,14 @@ public final class MissionLoader {
                 + (roots.size() > 1 ? " and the allowed folders " + roots.subList(1, roots.size()) : "");
     }
 
-    /** A mission file's text, refused unread when it is larger than {@link #MAX_FILE_BYTES}. */
-    private static String readBounded(Path file) throws IOException {
-        long size = Files.size(file);
-        if (size > MAX_FILE_BYTES) {
-            throw new IOException("file of " + size + " bytes is larger than the limit of " + MAX_FILE_BYTES
-                    + " bytes for a mission file");
+    /** The root of a mission file's text, or {@code null} after reporting why it was refused. */
+    private XmlElement parse(String text, Reporter reporter) {
+        try {
+            return xml.read(text);
+        } catch (XmlRefusal e) {
+            reporter.syntaxError(e.line(), e.column(), e.getMessage());
+            return null;
         }
-        return Files.readString(file);
     }
 
     private static List<MissionError> byPosition(List<MissionError> errors) {

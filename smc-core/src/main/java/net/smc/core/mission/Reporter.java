@@ -3,6 +3,7 @@ package net.smc.core.mission;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
+import net.smc.core.xml.XmlElement;
 
 /**
  * Collects the errors of one mission file, plus the shape checks every reader shares (which

@@ -10,7 +10,7 @@
  * the policies in a {@link net.smc.policy.api.PolicyRepository} and returns an immutable
  * {@link net.smc.core.mission.Mission}, or a {@link net.smc.core.mission.MissionException} listing
  * every {@link net.smc.core.mission.MissionError} as {@code FILE:LINE:COL: <element>: message}.
- * Inside, one class per phase: {@code XmlReader} (text to a positioned tree), {@code ClassReader}
+ * Inside, one class per phase: {@link net.smc.core.xml.XmlReader} (text to a positioned tree), {@code ClassReader}
  * (with {@code ConstraintsReader}) and {@code InstanceReader} (structure), {@code ClassRules} and
  * {@code InstanceRules} (the names and numbers make sense together), {@code PolicyCheck} (URIs
  * resolve and parse). The file format is in {@code missions/README.md}, with XSDs beside it.

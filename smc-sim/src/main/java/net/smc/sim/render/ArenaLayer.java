@@ -7,7 +7,7 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Rectangle2D;
 
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 
 /** Draws the still part of a world: floor, metre grid, fence, walls, doors, obstacles, hazards, targets, stations. */
 final class ArenaLayer {

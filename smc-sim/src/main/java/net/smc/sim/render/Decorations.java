@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.Locale;
 
 import net.smc.sim.robot.SimRobot;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 
 /** The header (title, caption, mission time), the scale bar in metres and the legend. */

@@ -9,7 +9,7 @@ import java.util.List;
 import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.ProximitySensors;
 import net.smc.sim.robot.SimRobot;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 
 /** Draws the sensor and radio overlays: camera cones, radio links, infrared rays. */

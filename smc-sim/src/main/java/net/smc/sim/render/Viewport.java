@@ -1,6 +1,6 @@
 package net.smc.sim.render;
 
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 
 /**
  * Where a world's metres land in a picture: the arena fitted, aspect kept, into the rectangle left

@@ -6,7 +6,7 @@ import java.util.List;
 
 import net.smc.sim.hardware.ChemicalSensor;
 import net.smc.sim.hardware.Pose;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 
 /**
  * A chemical sensor: a hazard is sensed while the robot's centre is within the hazard's radius of
@@ -29,7 +29,7 @@ final class ChemicalNose implements ChemicalSensor {
     public List<Reading> sense() {
         Pose p = robot.pose();
         List<Reading> readings = new ArrayList<>();
-        for (Arena.Hazard h : robot.world().arena().hazards()) {
+        for (Arena.Hazard h : robot.ground().arena().hazards()) {
             double reach = h.effect() + radius();
             double d = p.distanceTo(h.x(), h.y());
             if (d <= reach) {

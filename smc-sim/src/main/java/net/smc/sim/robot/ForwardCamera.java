@@ -7,8 +7,7 @@ import java.util.List;
 import net.smc.sim.hardware.Camera;
 import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.Sighting;
-import net.smc.sim.world.Arena;
-import net.smc.sim.world.SimWorld;
+import net.smc.sim.arena.Arena;
 
 /**
  * A camera at the front of the body, looking along the heading: it reports the tagged things
@@ -38,8 +37,8 @@ final class ForwardCamera implements Camera {
 
     @Override
     public List<Sighting> look() {
-        SimWorld world = robot.world();
-        Arena arena = world.arena();
+        RobotGround ground = robot.ground();
+        Arena arena = ground.arena();
         Pose p = robot.pose();
         double cx = p.x() + robot.spec().length() / 2 * Math.cos(p.heading());
         double cy = p.y() + robot.spec().length() / 2 * Math.sin(p.heading());
@@ -61,7 +60,7 @@ final class ForwardCamera implements Camera {
             }
             candidate++;
         }
-        for (SimRobot other : world.robots()) {
+        for (SimRobot other : ground.robots()) {
             if (other != robot) {
                 consider(seen, candidate, cx, cy, p.heading(), "", other.id(), "robot", other.x(), other.y());
             }
@@ -91,15 +90,14 @@ final class ForwardCamera implements Camera {
             return;
         }
         double bearing = Math.IEEEremainder(Math.atan2(y - cy, x - cx) - heading, 2 * Math.PI);
-        if (Math.abs(bearing) > spec.cameraFov() / 2 || !robot.world().clearLine(cx, cy, x, y)) {
+        if (Math.abs(bearing) > spec.cameraFov() / 2 || !robot.ground().clearLine(cx, cy, x, y)) {
             return;
         }
-        long step = robot.world().steps();
         int channel = SimRobot.Channels.CAMERA + 2 * candidate;
         double noisyDistance = distance + spec.cameraNoise()
-                * robot.world().noise().gaussian(robot.stream(), step, channel);
+                * robot.ground().gaussian(robot.stream(), channel);
         double noisyBearing = bearing + spec.cameraNoise() / 10
-                * robot.world().noise().gaussian(robot.stream(), step, channel + 1);
+                * robot.ground().gaussian(robot.stream(), channel + 1);
         String tag = prefix.isEmpty() ? id : prefix + id;
         seen.add(new Sighting(tag, kind, noisyBearing, Math.max(0, noisyDistance)));
     }

@@ -55,7 +55,6 @@ final class InfraredRing implements ProximitySensors {
         Pose p = robot.pose();
         double range = spec.irRange();
         double[] out = new double[edge.length];
-        long step = robot.world().steps();
         for (int i = 0; i < edge.length; i++) {
             double direction = p.heading() + spec.irAngle(i);
             double from = edge[i] - INSET;
@@ -63,14 +62,14 @@ final class InfraredRing implements ProximitySensors {
             rayY[i] = p.y() + from * Math.sin(direction);
             rayAngle[i] = direction;
         }
-        robot.world().castRays(rayX, rayY, rayAngle, range + INSET, robot.body(), hits);
+        robot.ground().castRays(rayX, rayY, rayAngle, range + INSET, robot.body(), hits);
         for (int i = 0; i < edge.length; i++) {
             double hit = hits[i];
             if (Double.isInfinite(hit)) {
                 out[i] = range;
             } else {
                 double noisy = hit - INSET + spec.irNoise()
-                        * robot.world().noise().gaussian(robot.stream(), step, SimRobot.Channels.INFRARED + i);
+                        * robot.ground().gaussian(robot.stream(), SimRobot.Channels.INFRARED + i);
                 out[i] = Math.max(0, Math.min(range, noisy));
             }
         }

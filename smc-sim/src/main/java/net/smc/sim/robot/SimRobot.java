@@ -16,25 +16,24 @@ import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.ProximitySensors;
 import net.smc.sim.hardware.Radio;
 import net.smc.sim.hardware.RobotHardware;
-import net.smc.sim.world.Arena;
-import net.smc.sim.world.Arena.Hazard;
-import net.smc.sim.world.SimWorld;
-import net.smc.sim.world.Thing;
+import net.smc.sim.arena.Arena;
+import net.smc.sim.arena.Arena.Hazard;
+import net.smc.sim.arena.Thing;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.MassType;
 
 /**
- * A simulated Koala-like robot in a {@link SimWorld}: a rectangular dyn4j body moved by a
+ * A simulated Koala-like robot in a world it sees through a {@link RobotGround}: a rectangular dyn4j body moved by a
  * differential drive (wheel speeds ramped within the acceleration limit, turned into body
  * velocities each step, so collisions with walls and robots are the physics engine's), with
  * noisy wheel odometry, 16 infrared ray-cast sensors, a forward camera, a chemical sensor, a
- * battery that drains with motion, and a radio. Made by {@link SimWorld#addRobot}; the world calls
+ * battery that drains with motion, and a radio. Made by {@link net.smc.sim.world.SimWorld#addRobot}; the world calls
  * {@link #runControl}, {@link #applyDrive} and {@link #afterStep} each step.
  */
 public final class SimRobot implements RobotHardware {
-    private final SimWorld world;
+    private final RobotGround ground;
     private final String id;
     private final int index;
     private final KoalaSpec spec;
@@ -49,9 +48,9 @@ public final class SimRobot implements RobotHardware {
     private ControlLoop[] loopOrder = new ControlLoop[0];
     private String disabledBy;
 
-    /** Used by {@link SimWorld#addRobot}; {@code index} numbers the robot's noise stream. */
-    public SimRobot(SimWorld world, String id, int index, KoalaSpec spec, Arena.Start start) {
-        this.world = Objects.requireNonNull(world, "world");
+    /** Used by {@link net.smc.sim.world.SimWorld#addRobot}; {@code index} numbers the robot's noise stream. */
+    public SimRobot(RobotGround ground, String id, int index, KoalaSpec spec, Arena.Start start) {
+        this.ground = Objects.requireNonNull(ground, "ground");
         this.id = Objects.requireNonNull(id, "id");
         this.index = index;
         this.spec = Objects.requireNonNull(spec, "spec");
@@ -116,7 +115,7 @@ public final class SimRobot implements RobotHardware {
 
     @Override
     public Radio radio() {
-        return world.radio().view(id);
+        return ground.radio(id);
     }
 
     @Override
@@ -177,8 +176,8 @@ public final class SimRobot implements RobotHardware {
         return disabledBy == null;
     }
 
-    SimWorld world() {
-        return world;
+    RobotGround ground() {
+        return ground;
     }
 
     /** The noise stream of this robot. */
@@ -208,17 +207,16 @@ public final class SimRobot implements RobotHardware {
      * @return what disabled the robot in this step, or null
      */
     public String afterStep(double dt) {
-        long step = world.steps();
         double noise = spec.odometryNoise();
-        double left = motors.left() * (1 + noise * world.noise().gaussian(index, step, Channels.ODOMETRY_LEFT));
-        double right = motors.right() * (1 + noise * world.noise().gaussian(index, step, Channels.ODOMETRY_RIGHT));
+        double left = motors.left() * (1 + noise * ground.gaussian(index, Channels.ODOMETRY_LEFT));
+        double right = motors.right() * (1 + noise * ground.gaussian(index, Channels.ODOMETRY_RIGHT));
         odometry.advance(left, right, spec.wheelBase(), dt);
         battery.drain(dt, (Math.abs(motors.left()) + Math.abs(motors.right())) / (2 * spec.maxSpeed()));
         if (disabledBy != null) {
             return null;
         }
         Pose p = pose();
-        for (Hazard hazard : world.arena().hazards()) {
+        for (Hazard hazard : ground.arena().hazards()) {
             if (hazard.disables() && p.distanceTo(hazard.x(), hazard.y()) <= hazard.effect()) {
                 disabledBy = "hazard:" + hazard.id();
                 return disabledBy;

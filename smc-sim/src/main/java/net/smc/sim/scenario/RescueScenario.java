@@ -32,9 +32,9 @@ import net.smc.sim.task.Assist;
 import net.smc.sim.team.SimVehicle;
 import net.smc.sim.team.TeamSimulation;
 import net.smc.sim.team.WorldTeam;
-import net.smc.sim.world.Arena;
-import net.smc.sim.world.ArenaException;
-import net.smc.sim.world.ArenaReader;
+import net.smc.sim.arena.Arena;
+import net.smc.sim.arena.ArenaException;
+import net.smc.sim.arena.ArenaReader;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.WorldStepListener;
 

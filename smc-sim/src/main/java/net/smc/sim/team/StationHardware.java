@@ -15,7 +15,7 @@ import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.ProximitySensors;
 import net.smc.sim.hardware.Radio;
 import net.smc.sim.hardware.RobotHardware;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 
 /**

@@ -39,7 +39,7 @@ import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.task.TaskCatalog;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 
 /**

@@ -20,7 +20,7 @@ import net.smc.sim.map.OccupancyGrid;
 import net.smc.sim.robot.SimRobot;
 import net.smc.sim.task.TaskCatalog;
 import net.smc.sim.task.TaskContext;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.WorldStepListener;
 

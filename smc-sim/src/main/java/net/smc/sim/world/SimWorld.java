@@ -9,10 +9,15 @@ import java.util.TreeMap;
 
 import net.smc.core.transport.Cancellable;
 import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.arena.Arena;
+import net.smc.sim.arena.ArenaReader;
+import net.smc.sim.arena.Thing;
 import net.smc.sim.radio.RadioGround;
 import net.smc.sim.radio.RadioSettings;
 import net.smc.sim.radio.WorldRadio;
+import net.smc.sim.hardware.Radio;
 import net.smc.sim.robot.KoalaSpec;
+import net.smc.sim.robot.RobotGround;
 import net.smc.sim.robot.SimRobot;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
@@ -62,6 +67,7 @@ public final class SimWorld {
     private final List<WorldStepListener> listeners = new ArrayList<>();
     private final WorldRadio radio;
     private final StaticShapes shapes;
+    private final RobotGround robotGround = new Surroundings();
     private final List<Body> nearBodies = new ArrayList<>();   // scratch of castRays
     private long steps;
     private Cancellable ticking;
@@ -103,7 +109,7 @@ public final class SimWorld {
         if (robots.containsKey(id) || arena.stations().stream().anyMatch(s -> s.id().equals(id))) {
             throw new IllegalArgumentException("a robot or station called '" + id + "' is in the world already; ids must be unique");
         }
-        SimRobot robot = new SimRobot(this, id, order.size(), spec, start);
+        SimRobot robot = new SimRobot(robotGround, id, order.size(), spec, start);
         physics.addBody(robot.body());
         robots.put(id, robot);
         order.add(robot);
@@ -346,6 +352,39 @@ public final class SimWorld {
         @Override
         public int wallsBetween(double ax, double ay, double bx, double by, int limit) {
             return shapes.wallsCrossed(ax, ay, bx, by, limit);
+        }
+    }
+
+    /** The world as its robots see it: the arena, the robots, ray casts, lines of sight, this step's noise, the radio. */
+    private final class Surroundings implements RobotGround {
+        @Override
+        public Arena arena() {
+            return arena;
+        }
+
+        @Override
+        public Iterable<SimRobot> robots() {
+            return SimWorld.this.robots();
+        }
+
+        @Override
+        public void castRays(double[] x, double[] y, double[] angle, double maxLength, Body self, double[] out) {
+            SimWorld.this.castRays(x, y, angle, maxLength, self, out);
+        }
+
+        @Override
+        public boolean clearLine(double ax, double ay, double bx, double by) {
+            return shapes.clear(ax, ay, bx, by);
+        }
+
+        @Override
+        public double gaussian(long stream, int channel) {
+            return noise.gaussian(stream, steps, channel);
+        }
+
+        @Override
+        public Radio radio(String id) {
+            return radio.view(id);
         }
     }
 

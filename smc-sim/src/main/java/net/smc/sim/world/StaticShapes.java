@@ -1,5 +1,7 @@
 package net.smc.sim.world;
 
+import net.smc.sim.arena.Arena;
+
 /**
  * The arena's solid shapes that never move (fence, walls, closed doors, boxes, cylinders), kept
  * apart from the physics world for the line tests that the camera's line of sight and the radio's

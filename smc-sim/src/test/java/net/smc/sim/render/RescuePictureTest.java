@@ -12,7 +12,7 @@ import java.util.List;
 
 import javax.imageio.ImageIO;
 
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.Worlds;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;

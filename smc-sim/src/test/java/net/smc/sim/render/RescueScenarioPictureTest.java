@@ -10,7 +10,7 @@ import java.util.List;
 import net.smc.sim.robot.SimRobot;
 import net.smc.sim.scenario.RescueScenario;
 import net.smc.sim.team.TeamSimulation;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 

@@ -13,7 +13,7 @@ import java.util.Map;
 
 import net.smc.sim.robot.KoalaSpec;
 import net.smc.sim.robot.SimRobot;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.Worlds;
 import org.junit.jupiter.api.Test;

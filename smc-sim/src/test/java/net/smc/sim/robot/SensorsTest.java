@@ -8,7 +8,7 @@ import java.util.List;
 
 import net.smc.sim.hardware.ChemicalSensor;
 import net.smc.sim.hardware.Sighting;
-import net.smc.sim.world.Arena;
+import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.Worlds;
 import org.junit.jupiter.api.Test;

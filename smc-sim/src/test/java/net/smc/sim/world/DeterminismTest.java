@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import java.util.Arrays;
 
 import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.arena.ArenaReader;
 import net.smc.sim.hardware.Pose;
 import net.smc.sim.robot.SimRobot;
 import org.junit.jupiter.api.Test;

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 
+import net.smc.sim.arena.Arena;
 import net.smc.sim.hardware.Pose;
 import net.smc.sim.robot.KoalaSpec;
 import net.smc.sim.robot.SimRobot;

@@ -3,6 +3,9 @@ package net.smc.sim.world;
 import java.nio.file.Path;
 
 import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.arena.Arena;
+import net.smc.sim.arena.ArenaException;
+import net.smc.sim.arena.ArenaReader;
 
 /** Test helpers: arenas from text, the shipped world files, worlds on a fresh scheduler. */
 public final class Worlds {

@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.List;
 
+import net.smc.sim.world.Worlds;
 import org.junit.jupiter.api.Test;
 
 class ArenaReaderTest {
@@ -56,6 +57,28 @@ class ArenaReaderTest {
         assertTrue(error.startsWith("bad.xml:3:"), error);
         assertTrue(error.contains("not well-formed XML"), error);
         assertTrue(error.endsWith("a world file must be well-formed XML"), error);
+    }
+
+    @Test
+    void doctype_isRefusedAtItsPosition() {
+        String error = only("<?xml version='1.0'?>\n<!DOCTYPE world [<!ENTITY x SYSTEM 'file:///etc/passwd'>]>\n"
+                + "<world name='&x;' width='4' height='4'/>");
+        assertEquals("bad.xml:2:1: a DOCTYPE declaration is not allowed; a world file has no DTD (its format is "
+                + "missions/worlds/world.xsd), so remove <!DOCTYPE ...>", error);
+    }
+
+    @Test
+    void overlongAttribute_isRefusedWithItsElementAndLimit() {
+        String error = only("<world name='" + "x".repeat(5000) + "' width='4' height='4'>\n</world>");
+        assertEquals("bad.xml:1:1: <world>: attribute 'name' has 5000 characters; an attribute value may have at most "
+                + "4096", error);
+    }
+
+    @Test
+    void oversizedText_isRefusedUnparsed() {
+        String text = "<world name='x' width='4' height='4'>" + " ".repeat(1024 * 1024) + "</world>";
+        assertEquals("bad.xml:1:1: the text has " + text.length() + " characters; a world file may have at most "
+                + "1048576", only(text));
     }
 
     @Test

@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import java.util.List;
 import java.util.stream.Collectors;

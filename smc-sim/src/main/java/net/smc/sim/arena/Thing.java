@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 /**
  * What a body in the world is: the user data of every dyn4j body the world makes, read by the

@@ -1,13 +1,18 @@
-package net.smc.core.mission;
+package net.smc.core.xml;
 
 import com.fasterxml.jackson.dataformat.xml.XmlFactory;
+import java.io.IOException;
 import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import javax.xml.stream.Location;
 import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamConstants;
@@ -15,58 +20,93 @@ import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
 
 /**
- * Reads a mission file into a tree of {@link XmlElement}s that keep their positions, through the
- * Stax parser of Jackson's {@link XmlFactory} (Woodstox). Jackson's data binding would map the
- * elements straight to records, but it forgets where each element was, and every error must name
- * its line and column. DTDs and external entities are refused: mission files come from a command
- * base over the network.
+ * Reads a document into a tree of {@link XmlElement}s that keep their positions, through the Stax
+ * parser of Jackson's {@link XmlFactory} (Woodstox). Jackson's data binding would map the elements
+ * straight to records, but it forgets where each element was, and every error must name its line
+ * and column. DTDs and external entities are refused, and sizes are bounded by {@link XmlLimits}:
+ * the documents read (mission files, world files) may come from elsewhere.
+ *
+ * <p>A reader keeps no state between reads (its Stax factory is configured once and only creates
+ * stream readers), so threads may share one.
  */
-final class XmlReader {
-    /** The most characters of text an element, or an attribute value, of a mission file may have. */
-    static final int MAX_TEXT_CHARS = 4096;
-
+public final class XmlReader {
+    private final String document;
+    private final String format;
+    private final XmlLimits limits;
     private final XMLInputFactory factory;
 
-    XmlReader() {
+    /**
+     * A reader of one kind of document.
+     *
+     * @param document what the document is, as messages name it ("mission file")
+     * @param format   where its format is described, as messages name it ("missions/*.xsd")
+     * @param limits   what it accepts
+     */
+    public XmlReader(String document, String format, XmlLimits limits) {
+        this.document = Objects.requireNonNull(document, "document");
+        this.format = Objects.requireNonNull(format, "format");
+        this.limits = Objects.requireNonNull(limits, "limits");
         factory = new XmlFactory().getXMLInputFactory();
         factory.setProperty(XMLInputFactory.SUPPORT_DTD, Boolean.FALSE);
         factory.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, Boolean.FALSE);
         factory.setProperty(XMLInputFactory.IS_COALESCING, Boolean.TRUE);
     }
 
+    public XmlLimits limits() {
+        return limits;
+    }
+
     /**
-     * The root element of {@code text}, or {@code null} after reporting why the text is not
-     * well-formed XML (the parser stops at the first such error, so this is the only one).
+     * The text of {@code file} (UTF-8), refused unread when it is larger than
+     * {@link XmlLimits#maxFileBytes()}.
      */
-    XmlElement read(String text, Reporter reporter) {
+    public String readFile(Path file) throws IOException {
+        long size = Files.size(file);
+        if (size > limits.maxFileBytes()) {
+            throw new IOException("file of " + size + " bytes is larger than the limit of " + limits.maxFileBytes()
+                    + " bytes for a " + document);
+        }
+        return Files.readString(file, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * The root element of {@code text} ({@code null} for a document without one).
+     *
+     * @throws XmlRefusal when the text is not well-formed XML (the parser stops at the first such
+     *                    error, so it is the only one), has a DOCTYPE, or is beyond the limits
+     */
+    public XmlElement read(String text) throws XmlRefusal {
+        if (text.length() > limits.maxFileBytes()) {
+            throw new XmlRefusal(1, 1, "the text has " + text.length() + " characters; a " + document
+                    + " may have at most " + limits.maxFileBytes());
+        }
         XMLStreamReader reader = null;
         try {
             reader = factory.createXMLStreamReader(new StringReader(text));
             return readDocument(reader);
         } catch (Refused e) {
-            reporter.syntaxError(e.line, e.column, e.getMessage());
-            return null;
+            throw new XmlRefusal(e.line, e.column, e.getMessage());
         } catch (XMLStreamException e) {
             Location at = e.getLocation();
-            reporter.syntaxError(at == null ? 1 : at.getLineNumber(), at == null ? 1 : at.getColumnNumber(),
-                    "not well-formed XML: " + cause(e) + "; a mission file must be well-formed XML");
-            return null;
+            throw new XmlRefusal(at == null ? 1 : at.getLineNumber(), at == null ? 1 : at.getColumnNumber(),
+                    "not well-formed XML: " + cause(e) + "; a " + document + " must be well-formed XML");
         } finally {
             close(reader);
         }
     }
 
-    private static XmlElement readDocument(XMLStreamReader reader) throws XMLStreamException {
+    private XmlElement readDocument(XMLStreamReader reader) throws XMLStreamException {
         Deque<Builder> open = new ArrayDeque<>();
         XmlElement root = null;
         while (reader.hasNext()) {
             int event = reader.next();
             switch (event) {
-                case XMLStreamConstants.START_ELEMENT -> open.push(new Builder(reader));
+                case XMLStreamConstants.START_ELEMENT -> open.push(new Builder(reader, limits));
                 case XMLStreamConstants.DTD -> {
                     Location at = reader.getLocation();
                     throw new Refused(at.getLineNumber(), at.getColumnNumber(), "a DOCTYPE declaration is not "
-                            + "allowed; a mission file has no DTD (its format is missions/*.xsd), so remove <!DOCTYPE ...>");
+                            + "allowed; a " + document + " has no DTD (its format is " + format
+                            + "), so remove <!DOCTYPE ...>");
                 }
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
                     if (!open.isEmpty()) {
@@ -107,8 +147,9 @@ final class XmlReader {
         }
     }
 
-    /** A rule of mission files broken while reading: ends the read, at a position. */
+    /** A rule broken while reading: leaves the Stax loop at once, at a position. */
     private static final class Refused extends RuntimeException {
+        private static final long serialVersionUID = 1L;
         final int line;
         final int column;
 
@@ -125,24 +166,26 @@ final class XmlReader {
         final Map<String, String> attributes = new LinkedHashMap<>();
         final int line;
         final int column;
+        final int maxTextChars;
         final StringBuilder text = new StringBuilder();
         int textLine;
         int textColumn;
         final List<XmlElement> children = new ArrayList<>();
 
-        Builder(XMLStreamReader reader) {
+        Builder(XMLStreamReader reader, XmlLimits limits) {
             name = reader.getLocalName();
             Location at = reader.getLocation();
             line = at.getLineNumber();
             column = at.getColumnNumber();
+            maxTextChars = limits.maxTextChars();
             for (int i = 0; i < reader.getAttributeCount(); i++) {
                 String namespace = reader.getAttributeNamespace(i);
                 if (namespace == null || namespace.isEmpty()) {
                     String value = reader.getAttributeValue(i);
-                    if (value.length() > MAX_TEXT_CHARS) {
+                    if (value.length() > limits.maxAttributeChars()) {
                         throw new Refused(line, column, "<" + name + ">: attribute '" + reader.getAttributeLocalName(i)
                                 + "' has " + value.length() + " characters; an attribute value may have at most "
-                                + MAX_TEXT_CHARS);
+                                + limits.maxAttributeChars());
                     }
                     attributes.put(reader.getAttributeLocalName(i), value);
                 }
@@ -167,9 +210,9 @@ final class XmlReader {
                 textLine = line;
                 textColumn = column;
             }
-            if ((long) text.length() + chunk.length() > MAX_TEXT_CHARS) {
-                throw new Refused(line, column, "<" + name + ">: its text is longer than " + MAX_TEXT_CHARS
-                        + " characters; the text of an element may have at most " + MAX_TEXT_CHARS);
+            if ((long) text.length() + chunk.length() > maxTextChars) {
+                throw new Refused(line, column, "<" + name + ">: its text is longer than " + maxTextChars
+                        + " characters; the text of an element may have at most " + maxTextChars);
             }
             text.append(chunk);
         }

@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import java.util.List;
 import java.util.Optional;
@@ -6,7 +6,7 @@ import java.util.Optional;
 /**
  * An arena as its world file describes it: a fenced rectangle {@code [0, width] x [0, height]}
  * holding walls, doors, obstacles, hazards, the soldier, fixed radio stations and the robots'
- * start positions. Immutable; {@link ArenaReader} makes one from a file, {@link SimWorld} builds
+ * start positions. Immutable; {@link ArenaReader} makes one from a file, {@link net.smc.sim.world.SimWorld} builds
  * the physical world from it. Lengths in metres, angles in radians (files write degrees).
  *
  * @param name     the arena's name

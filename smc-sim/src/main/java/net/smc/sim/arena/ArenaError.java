@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import java.nio.file.Path;
 

@@ -1,8 +1,6 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -12,15 +10,18 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
-import net.smc.sim.world.Arena.Box;
-import net.smc.sim.world.Arena.Cylinder;
-import net.smc.sim.world.Arena.Door;
-import net.smc.sim.world.Arena.Hazard;
-import net.smc.sim.world.Arena.Start;
-import net.smc.sim.world.Arena.Station;
-import net.smc.sim.world.Arena.Target;
-import net.smc.sim.world.Arena.Wall;
-import net.smc.sim.world.XmlTree.Element;
+import net.smc.core.xml.XmlElement;
+import net.smc.core.xml.XmlLimits;
+import net.smc.core.xml.XmlReader;
+import net.smc.core.xml.XmlRefusal;
+import net.smc.sim.arena.Arena.Box;
+import net.smc.sim.arena.Arena.Cylinder;
+import net.smc.sim.arena.Arena.Door;
+import net.smc.sim.arena.Arena.Hazard;
+import net.smc.sim.arena.Arena.Start;
+import net.smc.sim.arena.Arena.Station;
+import net.smc.sim.arena.Arena.Target;
+import net.smc.sim.arena.Arena.Wall;
 
 /**
  * Reads a world file ({@code missions/worlds/*.xml}, schema {@code missions/worlds/world.xsd}) into
@@ -47,9 +48,12 @@ public final class ArenaReader {
             "start", Set.of("id", "x", "y", "heading"));
     private static final String CHILDREN = "<wall>, <door>, <box>, <cylinder>, <hazard>, <target>, <station> or <start>";
 
+    /** World files are read with the default limits: 1 MiB, 4096 characters per text or attribute value. */
+    private static final XmlReader XML = new XmlReader("world file", "missions/worlds/world.xsd", XmlLimits.DEFAULTS);
+
     private final Path file;
     private final List<ArenaError> errors = new ArrayList<>();
-    private final Map<String, Element> ids = new HashMap<>();
+    private final Map<String, XmlElement> ids = new HashMap<>();
     private double width;
     private double height;
 
@@ -57,9 +61,9 @@ public final class ArenaReader {
         this.file = file;
     }
 
-    /** Reads and checks the world file at {@code file}. */
+    /** Reads and checks the world file at {@code file}; a file larger than 1 MiB is refused unread. */
     public static Arena read(Path file) throws IOException, ArenaException {
-        return parse(file, Files.readString(file, StandardCharsets.UTF_8));
+        return parse(file, XML.readFile(file));
     }
 
     /** Checks {@code text}, a world file's content; {@code file} names it in errors. */
@@ -74,12 +78,11 @@ public final class ArenaReader {
     }
 
     private Arena arena(String text) {
-        Element root;
+        XmlElement root;
         try {
-            root = XmlTree.parse(text);
-        } catch (XmlTree.SyntaxError e) {
-            errors.add(new ArenaError(file, e.line, e.column, null,
-                    "not well-formed XML: " + e.getMessage() + "; a world file must be well-formed XML"));
+            root = XML.read(text);
+        } catch (XmlRefusal e) {
+            errors.add(new ArenaError(file, e.line(), e.column(), null, e.getMessage()));
             return null;
         }
         if (root == null || !root.name().equals("world")) {
@@ -99,8 +102,8 @@ public final class ArenaReader {
         List<Target> targets = new ArrayList<>();
         List<Station> stations = new ArrayList<>();
         List<Start> starts = new ArrayList<>();
-        List<Element> startElements = new ArrayList<>();
-        for (Element el : root.children()) {
+        List<XmlElement> startElements = new ArrayList<>();
+        for (XmlElement el : root.children()) {
             Set<String> allowed = ATTRIBUTES.get(el.name());
             if (allowed == null) {
                 error(el, "unexpected element in <world>; expected " + CHILDREN);
@@ -108,7 +111,7 @@ public final class ArenaReader {
             }
             attributes(el, allowed);
             noText(el);
-            for (Element child : el.children()) {
+            for (XmlElement child : el.children()) {
                 error(child, "unexpected element in " + el.tag() + "; " + el.tag() + " holds no elements");
             }
             switch (el.name()) {
@@ -150,7 +153,7 @@ public final class ArenaReader {
         return arena;
     }
 
-    private Hazard hazard(Element el) {
+    private Hazard hazard(XmlElement el) {
         String id = id(el);
         double radius = number(el, "radius", 0);
         if (radius < 0) {
@@ -166,7 +169,7 @@ public final class ArenaReader {
     }
 
     /** Reports a start that lies within {@link #START_CLEARANCE} of a solid thing. */
-    private void clearance(Arena arena, Start start, Element el) {
+    private void clearance(Arena arena, Start start, XmlElement el) {
         double nearest = Geometry2.clearance(arena, start.x(), start.y());
         if (nearest < START_CLEARANCE) {
             error(el, String.format(java.util.Locale.ROOT,
@@ -175,7 +178,7 @@ public final class ArenaReader {
         }
     }
 
-    private double[] segment(Element el) {
+    private double[] segment(XmlElement el) {
         double x1 = coordinate(el, "x1", width);
         double y1 = coordinate(el, "y1", height);
         double x2 = coordinate(el, "x2", width);
@@ -186,15 +189,15 @@ public final class ArenaReader {
         return new double[] {x1, y1, x2, y2};
     }
 
-    private double x(Element el) {
+    private double x(XmlElement el) {
         return coordinate(el, "x", width);
     }
 
-    private double y(Element el) {
+    private double y(XmlElement el) {
         return coordinate(el, "y", height);
     }
 
-    private double coordinate(Element el, String attribute, double limit) {
+    private double coordinate(XmlElement el, String attribute, double limit) {
         double value = number(el, attribute, Double.NaN);
         if (!Double.isNaN(limit) && (value < 0 || value > limit)) {
             error(el, attribute + " " + value + " lies outside the arena; it must be within 0 to " + limit);
@@ -202,7 +205,7 @@ public final class ArenaReader {
         return value;
     }
 
-    private double positive(Element el, String attribute, double fallback) {
+    private double positive(XmlElement el, String attribute, double fallback) {
         double value = number(el, attribute, fallback);
         if (value <= 0) {
             error(el, attribute + " " + value + " is not positive; " + el.tag() + "'s " + attribute + " must be above 0");
@@ -211,7 +214,7 @@ public final class ArenaReader {
     }
 
     /** The attribute as a finite number; {@code fallback} when absent, or an error when NaN (required). */
-    private double number(Element el, String attribute, double fallback) {
+    private double number(XmlElement el, String attribute, double fallback) {
         String text = el.attributes().get(attribute);
         if (text == null) {
             if (Double.isNaN(fallback)) {
@@ -245,7 +248,7 @@ public final class ArenaReader {
         };
     }
 
-    private boolean bool(Element el, String attribute, boolean fallback) {
+    private boolean bool(XmlElement el, String attribute, boolean fallback) {
         String text = el.attributes().get(attribute);
         if (text == null) {
             return fallback;
@@ -256,7 +259,7 @@ public final class ArenaReader {
         return text.equals("true");
     }
 
-    private String text(Element el, String attribute) {
+    private String text(XmlElement el, String attribute) {
         String text = el.attributes().get(attribute);
         if (text == null || text.isBlank()) {
             error(el, (text == null ? "missing" : "empty") + " attribute '" + attribute + "'; " + el.tag()
@@ -266,7 +269,7 @@ public final class ArenaReader {
         return text;
     }
 
-    private String word(Element el, String attribute, String fallback) {
+    private String word(XmlElement el, String attribute, String fallback) {
         String text = el.attributes().get(attribute);
         if (text == null) {
             return fallback;
@@ -277,13 +280,13 @@ public final class ArenaReader {
         return text;
     }
 
-    private String id(Element el) {
+    private String id(XmlElement el) {
         String id = text(el, "id");
         if (!id.isEmpty()) {
             if (!id.matches("[A-Za-z][A-Za-z0-9_-]*")) {
                 error(el, "id '" + id + "' is not a name; an id is a letter, then letters, digits, _ or -");
             }
-            Element first = ids.putIfAbsent(id, el);
+            XmlElement first = ids.putIfAbsent(id, el);
             if (first != null) {
                 error(el, "id '" + id + "' is used already by " + first.tag() + " at line " + first.line()
                         + "; ids must be unique in a world file");
@@ -292,11 +295,11 @@ public final class ArenaReader {
         return id;
     }
 
-    private String optionalId(Element el) {
+    private String optionalId(XmlElement el) {
         return el.attributes().containsKey("id") ? id(el) : el.name() + "@" + el.line() + ":" + el.column();
     }
 
-    private void attributes(Element el, Set<String> allowed) {
+    private void attributes(XmlElement el, Set<String> allowed) {
         for (String attribute : el.attributes().keySet()) {
             if (!allowed.contains(attribute)) {
                 error(el, "unexpected attribute '" + attribute + "'; " + el.tag() + " takes only "
@@ -305,13 +308,13 @@ public final class ArenaReader {
         }
     }
 
-    private void noText(Element el) {
+    private void noText(XmlElement el) {
         if (!el.text().isEmpty()) {
             error(el, "unexpected text; " + el.tag() + " holds no text (write comments as <!-- ... -->)");
         }
     }
 
-    private void error(Element at, String message) {
+    private void error(XmlElement at, String message) {
         errors.add(new ArenaError(file, at == null ? 1 : at.line(), at == null ? 1 : at.column(),
                 at == null ? null : at.name(), message));
     }

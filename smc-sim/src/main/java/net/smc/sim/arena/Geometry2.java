@@ -1,4 +1,4 @@
-package net.smc.sim.world;
+package net.smc.sim.arena;
 
 /** Small plane-geometry helpers for arena checks (distances to rotated rectangles and circles). */
 final class Geometry2 {
