@@ -24,7 +24,7 @@ class PaperPoliciesTest {
             .build();
 
     @Test
-    void tablesLoad_asTheCommandersPoliciesUnderThePapersNames() {
+    void tablesLoad_asTheCommandersPoliciesUnderThePapersNames() throws Exception {
         Loaded loaded = c.roles.load(commander);
 
         assertEquals(List.of("assignSurveyor", "reAssignSurveyor"), loaded.policies());
@@ -32,7 +32,7 @@ class PaperPoliciesTest {
     }
 
     @Test
-    void tableI_capableVehicle_isAskedForItsFullCapability_asASurveyor() {
+    void tableI_capableVehicle_isAskedForItsFullCapability_asASurveyor() throws Exception {
         c.roles.load(commander);
 
         c.newUAV("uav7", PaperCell.summary("uav7", "motion", "video", "infrared"), PaperCell.TOKEN);
@@ -43,7 +43,7 @@ class PaperPoliciesTest {
     }
 
     @Test
-    void tableI_vehicleWithoutVideo_isNotAsked() {
+    void tableI_vehicleWithoutVideo_isNotAsked() throws Exception {
         c.roles.load(commander);
 
         c.newUAV("uav8", PaperCell.summary("uav8", "motion", "infrared"), PaperCell.TOKEN);
@@ -54,7 +54,7 @@ class PaperPoliciesTest {
     }
 
     @Test
-    void tableI_vehicleWithAWrongCredential_isNotAsked() {
+    void tableI_vehicleWithAWrongCredential_isNotAsked() throws Exception {
         c.roles.load(commander);
 
         c.newUAV("uav9", PaperCell.summary("uav9", "motion", "video"), "stolen");
@@ -64,7 +64,7 @@ class PaperPoliciesTest {
     }
 
     @Test
-    void tableI_withoutTheCommandersAuthorisations_isDenied() {
+    void tableI_withoutTheCommandersAuthorisations_isDenied() throws Exception {
         c.roles.load(Role.builder("commander").mission("policy:/roles/commander/assign").build());
 
         c.newUAV("uav7", PaperCell.summary("uav7", "motion", "video"), PaperCell.TOKEN);
@@ -75,7 +75,7 @@ class PaperPoliciesTest {
     }
 
     @Test
-    void tableII_failedSurveyor_isReassignedByTheDefaultScheme() {
+    void tableII_failedSurveyor_isReassignedByTheDefaultScheme() throws Exception {
         c.roles.load(commander);
 
         c.failure("surveyor", "uav7");
@@ -87,7 +87,7 @@ class PaperPoliciesTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"aggregator", "relay", "hdetector"})
-    void tableII_failureInAnotherRole_isNotReassigned(String role) {
+    void tableII_failureInAnotherRole_isNotReassigned(String role) throws Exception {
         c.roles.load(commander);
 
         c.failure(role, "uav7");
@@ -98,7 +98,7 @@ class PaperPoliciesTest {
     }
 
     @Test
-    void commanderWithdrawn_nolongerAssignsOrReassigns() {
+    void commanderWithdrawn_nolongerAssignsOrReassigns() throws Exception {
         c.roles.load(commander);
         c.roles.withdraw("commander");
 

@@ -35,7 +35,7 @@ class PolicyRepositoryFilesTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("uris")
-    void everyRepositoryFile_parses(String uri) {
+    void everyRepositoryFile_parses(String uri) throws Exception {
         String text = PaperCell.REPOSITORY.read(uri).orElseThrow();
 
         Unit unit = Parser.parse(uri, text);
@@ -52,7 +52,7 @@ class PolicyRepositoryFilesTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("roles")
-    void roleMissionAndAuthorisations_loadWithoutErrors(String name) {
+    void roleMissionAndAuthorisations_loadWithoutErrors(String name) throws Exception {
         PaperCell c = new PaperCell();
 
         Loaded loaded = c.roles.load(PaperCell.role(name));
@@ -64,7 +64,7 @@ class PolicyRepositoryFilesTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("roles")
-    void roleWithdrawn_leavesNothingBehind(String name) {
+    void roleWithdrawn_leavesNothingBehind(String name) throws Exception {
         PaperCell c = new PaperCell();
         String before = Trees.describe(c.cell.root());
         c.roles.load(PaperCell.role(name));
@@ -75,7 +75,7 @@ class PolicyRepositoryFilesTest {
     }
 
     @Test
-    void allFiveRoles_loadTogetherInOneCell() {
+    void allFiveRoles_loadTogetherInOneCell() throws Exception {
         PaperCell c = new PaperCell();
 
         for (String name : MISSION_ROLES) {
@@ -89,7 +89,7 @@ class PolicyRepositoryFilesTest {
     }
 
     @Test
-    void bootEvents_runTwice_keepTheirTemplates() {
+    void bootEvents_runTwice_keepTheirTemplates() throws Exception {
         PaperCell c = new PaperCell();
         Object template = c.cell.resolve("/event/newUAV");
 

@@ -19,12 +19,12 @@ class RoleMissionsTest {
     private final PaperCell c = new PaperCell();
 
     @AfterEach
-    void noErrors() {
+    void noErrors() throws Exception {
         assertTrue(c.errors.isEmpty(), c.errors::toString);
     }
 
     @Test
-    void commander_reassignsAFailedAggregator() {
+    void commander_reassignsAFailedAggregator() throws Exception {
         c.roles.load(PaperCell.role("commander"));
 
         c.failure("aggregator", "uav3");
@@ -34,7 +34,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void surveyor_asksDetectorCapableVehiclesToBeHazardDetectors() {
+    void surveyor_asksDetectorCapableVehiclesToBeHazardDetectors() throws Exception {
         c.roles.load(PaperCell.role("surveyor"));
 
         c.newUAV("uav4", PaperCell.summary("uav4", "motion", "chemical"), PaperCell.TOKEN);
@@ -43,7 +43,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void surveyor_asksRadioCapableVehiclesToBeRelays() {
+    void surveyor_asksRadioCapableVehiclesToBeRelays() throws Exception {
         c.roles.load(PaperCell.role("surveyor"));
 
         c.newUAV("uav5", PaperCell.summary("uav5", "motion", "communication"), PaperCell.TOKEN);
@@ -52,7 +52,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void surveyor_reassignsTheRolesItManages_only() {
+    void surveyor_reassignsTheRolesItManages_only() throws Exception {
         c.roles.load(PaperCell.role("surveyor"));
 
         c.failure("relay", "uav5");
@@ -62,7 +62,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void aggregator_recordsHazardsThatDetectorsReportFromTheirCells() {
+    void aggregator_recordsHazardsThatDetectorsReportFromTheirCells() throws Exception {
         c.roles.load(Role.builder("aggregator").mission("policy:/roles/aggregator/mission")
                 .authorisation("policy:/roles/aggregator/auth")
                 .external(new ExternalInterface(List.of(), List.of(), List.of(), List.of("hazardDetected"))).build());
@@ -75,7 +75,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void aggregator_refusesHazardReportsFromRolesNotAllowed() {
+    void aggregator_refusesHazardReportsFromRolesNotAllowed() throws Exception {
         c.roles.load(Role.builder("aggregator").mission("policy:/roles/aggregator/mission")
                 .authorisation("policy:/roles/aggregator/auth")
                 .external(new ExternalInterface(List.of(), List.of(), List.of(), List.of("hazardDetected"))).build());
@@ -87,7 +87,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void hdetector_keepsTheHazardsItConfirms() {
+    void hdetector_keepsTheHazardsItConfirms() throws Exception {
         c.roles.load(PaperCell.role("hdetector"));
 
         c.cell.raise("/event/hazardDetected", "hazardDetected", "uav4", "radiation", 7, 1);
@@ -97,7 +97,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void relay_tracksWeakLinks_andForgetsRecoveredOnes() {
+    void relay_tracksWeakLinks_andForgetsRecoveredOnes() throws Exception {
         c.roles.load(PaperCell.role("relay"));
 
         c.cell.raise("/event/linkQuality", "linkQuality", "uav2", 0.1);
@@ -109,7 +109,7 @@ class RoleMissionsTest {
     }
 
     @Test
-    void relay_isManagedByItsSurveyor_throughTheExternalInterface() {
+    void relay_isManagedByItsSurveyor_throughTheExternalInterface() throws Exception {
         c.roles.load(PaperCell.role("relay"));
         ExternalGateway gateway = new ExternalGateway(c.roles);
 

@@ -10,7 +10,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
- * Start here: the {@code smc} command, with the subcommands {@code run} ({@link RunCommand}),
+ * Start here: the {@code smc} command, with the subcommands {@code demo} ({@link DemoCommand}), {@code run} ({@link RunCommand}),
  * {@code shell} ({@link ShellCommand}), {@code validate} ({@link ValidateCommand}),
  * {@code keys} ({@link KeysCommand}), {@code node} ({@link NodeCommand}) and {@code status}
  * ({@link StatusCommand}). Only {@link #main} touches the process (its streams, its exit status, and
@@ -44,6 +44,7 @@ public final class Main implements Callable<Integer> {
     /** The {@code smc} command, whose {@code node} runs (and {@code run} may run) until a signal from {@code stops} fires. */
     static CommandLine commandLine(Io io, Supplier<StopSignal> stops) {
         CommandLine commandLine = new CommandLine(new Main())
+                .addSubcommand(new DemoCommand(io))
                 .addSubcommand(new CommandLine(new ExperimentCommand()).addSubcommand(new SetupTimeCommand(io)))
                 .addSubcommand(new KeysCommand(io))
                 .addSubcommand(new NodeCommand(io, stops))

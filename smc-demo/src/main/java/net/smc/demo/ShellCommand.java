@@ -24,7 +24,9 @@ import picocli.CommandLine.Spec;
                     + "the printed form of its last statement's value goes to standard output; "
                     + "errors go to standard error and the shell goes on.",
             "In errors an input is named stdin, its lines counted from 1 within that input.",
-            "On a terminal the shell prompts with 'smc> ' (and '...> ' for an input's further lines)."},
+            "On a terminal the shell prompts with 'smc> ' (and '...> ' for an input's further lines), "
+                    + "edits the line (arrows, Ctrl-A/E, Ctrl-R) and keeps a history in ~/.smc_history; "
+                    + "Ctrl-D ends the input, Ctrl-C drops the line being edited."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {
             "0:the end of input was reached (errors in the files or the inputs do not change this)",
@@ -60,8 +62,17 @@ final class ShellCommand implements Callable<Integer> {
     }
 
     private void readInputs(CommandCell cell) throws IOException {
+        if (io.interactive() && io.stdin() == System.in) {
+            try (TerminalLines terminal = TerminalLines.open(Path.of(System.getProperty("user.home"), ".smc_history"))) {
+                readInputs(cell, new ShellInput(terminal));
+            }
+            return;
+        }
+        readInputs(cell, new ShellInput(io));
+    }
+
+    private void readInputs(CommandCell cell, ShellInput input) throws IOException {
         PolicyEngine.Session session = cell.cell().session();
-        ShellInput input = new ShellInput(io);
         for (String text = input.next(); text != null; text = input.next()) {
             cell.cell().timers().runDue();   // the shell runs due timers between inputs, never while it waits
             if (cell.exitStatus().isPresent()) {

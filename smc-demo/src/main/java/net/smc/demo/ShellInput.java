@@ -11,31 +11,64 @@ import java.nio.charset.StandardCharsets;
  * after trailing whitespace, is {@code .}; the tokens are not looked at, so a line that ends with
  * {@code .} inside a string literal or a comment also ends the input. Blank lines before an input
  * are skipped; text left at the end of the stream without a final {@code .} is one last input.
- * On a terminal, prompts {@code smc> } for an input's first line and {@code ...> } for the rest.
+ * On a terminal, prompts {@code smc> } for an input's first line and {@code ...> } for the rest;
+ * there the lines come from {@link TerminalLines} (line editing and history), elsewhere from the
+ * stream as they are.
  */
 final class ShellInput {
     static final String PROMPT = "smc> ";
     static final String CONTINUATION = "...> ";
 
-    private final BufferedReader reader;
-    /** Where prompts go; {@code null} when stdin is not a terminal. */
-    private final PrintWriter prompts;
+    /** Where the lines come from: a pipe or file, or a terminal's line editor. */
+    interface LineSource {
+        /** The next line without its ending, after showing {@code prompt} if it shows prompts; null at the end. */
+        String readLine(String prompt) throws IOException;
+
+        /** Shows that the input ended (a terminal moves to a fresh line). */
+        default void ended() {
+        }
+    }
+
+    private final LineSource lines;
 
     ShellInput(Io io) {
-        this.reader = new BufferedReader(new InputStreamReader(io.stdin(), StandardCharsets.UTF_8));
-        this.prompts = io.interactive() ? io.stdout() : null;
+        this(piped(io));
+    }
+
+    ShellInput(LineSource lines) {
+        this.lines = lines;
+    }
+
+    /** Lines read from {@code io}'s stdin; prompts go to its stdout when it is interactive. */
+    static LineSource piped(Io io) {
+        BufferedReader reader = new BufferedReader(new InputStreamReader(io.stdin(), StandardCharsets.UTF_8));
+        PrintWriter prompts = io.interactive() ? io.stdout() : null;
+        return new LineSource() {
+            @Override
+            public String readLine(String prompt) throws IOException {
+                if (prompts != null) {
+                    prompts.print(prompt);
+                    prompts.flush();
+                }
+                return reader.readLine();
+            }
+
+            @Override
+            public void ended() {
+                if (prompts != null) {
+                    prompts.println();
+                }
+            }
+        };
     }
 
     /** The next input's text (its lines, each ending in a newline), or {@code null} at the end. */
     String next() throws IOException {
         StringBuilder text = new StringBuilder();
         while (true) {
-            prompt(text.isEmpty() ? PROMPT : CONTINUATION);
-            String line = reader.readLine();
+            String line = lines.readLine(text.isEmpty() ? PROMPT : CONTINUATION);
             if (line == null) {
-                if (prompts != null) {
-                    prompts.println();
-                }
+                lines.ended();
                 return text.isEmpty() ? null : text.toString();
             }
             if (text.isEmpty() && line.isBlank()) {
@@ -45,13 +78,6 @@ final class ShellInput {
             if (line.stripTrailing().endsWith(".")) {
                 return text.toString();
             }
-        }
-    }
-
-    private void prompt(String prompt) {
-        if (prompts != null) {
-            prompts.print(prompt);
-            prompts.flush();
         }
     }
 }

@@ -49,4 +49,48 @@ class ShellInputTest {
         assertEquals("y\n", input.next());
         assertNull(input.next());
     }
+
+    /** Lines as a terminal's line editor gives them, recording the prompt shown before each. */
+    private static final class Scripted implements ShellInput.LineSource {
+        final java.util.Iterator<String> lines;
+        final java.util.List<String> prompts = new java.util.ArrayList<>();
+        int ended;
+
+        Scripted(String... lines) {
+            this.lines = java.util.List.of(lines).iterator();
+        }
+
+        @Override
+        public String readLine(String prompt) {
+            prompts.add(prompt);
+            return lines.hasNext() ? lines.next() : null;
+        }
+
+        @Override
+        public void ended() {
+            ended++;
+        }
+    }
+
+    @Test
+    void aLineEditor_isPromptedForEachLine_withTheContinuationPromptInsideAnUnfinishedInput() throws Exception {
+        Scripted terminal = new Scripted("x := 1", "  + 2.", "", "y.");
+        ShellInput input = new ShellInput(terminal);
+
+        assertEquals("x := 1\n  + 2.\n", input.next());
+        assertEquals("y.\n", input.next());
+        assertNull(input.next());
+        assertEquals(java.util.List.of("smc> ", "...> ", "smc> ", "smc> ", "smc> "), terminal.prompts);
+        assertEquals(1, terminal.ended);
+    }
+
+    @Test
+    void aLineEditorEndingInsideAnInput_runsWhatItHas() throws Exception {
+        Scripted terminal = new Scripted("a := 1", "b := a + 1");
+        ShellInput input = new ShellInput(terminal);
+
+        assertEquals("a := 1\nb := a + 1\n", input.next());
+        assertEquals(java.util.List.of("smc> ", "...> ", "...> "), terminal.prompts);
+        assertNull(input.next());
+    }
 }

@@ -82,7 +82,7 @@ class ValidateCommandTest {
 
         assertEquals(List.of(
                 instance + ":12:21: <comTimeout>: 'soon' is not an int; parameter 'comTimeout' is declared int in class 'Rescue'",
-                instance + ":25:22: <minimal>: minimal 4 is more than optimal 1; the minimal cardinality is at most "
+                instance + ":24:22: <minimal>: minimal 4 is more than optimal 1; the minimal cardinality is at most "
                         + "the reasonably-optimal one"), result.errLines());
         assertEquals("", result.out());
         assertEquals(1, result.status());
@@ -122,7 +122,7 @@ class ValidateCommandTest {
         Smc.Result result = smc.run("validate", "--repository", REPOSITORY, instance);
 
         assertEquals(1, result.errLines().size(), result.err());
-        assertTrue(result.err().startsWith(classFile + ":26:42: "), result.err());
+        assertTrue(result.err().startsWith(classFile + ":24:42: "), result.err());
         assertTrue(result.err().contains("<manages>: unknown role 'medic'"), result.err());
         assertEquals(1, result.status());
     }

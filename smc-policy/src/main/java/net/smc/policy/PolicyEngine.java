@@ -5,9 +5,14 @@ import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.api.Limits;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.AuthMode;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.EventHandle;
+import net.smc.policy.api.Handle;
+import net.smc.policy.api.TeamLink;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -25,8 +30,10 @@ import net.smc.policy.runtime.EventTemplate;
 import net.smc.policy.runtime.Execution;
 import net.smc.policy.runtime.ExitRequest;
 import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.runtime.TeamArrivals;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.runtime.Values;
+import net.smc.policy.stdlib.StandardObjects;
 
 /**
  * Start here: one self-managed cell's policy engine, embeddable on its own. It runs PonderTalk
@@ -139,8 +146,11 @@ public final class PolicyEngine {
 
         public PolicyEngine build() {
             TimerQueue queue = scheduler == null ? new TimerQueue(clock) : null;
+            Map<String, Class<?>> loadable = new LinkedHashMap<>(StandardObjects.classes());
+            loadable.putAll(classes);
             return new PolicyEngine(new CellRuntime(new CellRuntime.Config(output, errors, auth, clock, random, limits,
-                    repository, Map.copyOf(classes), scheduler == null ? queue : scheduler, arguments)), queue);
+                    repository, Collections.unmodifiableMap(loadable), scheduler == null ? queue : scheduler, arguments,
+                    StandardObjects::parseXml)), queue);
         }
     }
 
@@ -244,6 +254,20 @@ public final class PolicyEngine {
         }
     }
 
+    /**
+     * Connects the cell's standard objects to the other cells of its team ({@code EventForwarder
+     * forwardTo: "/team/<cell>/<path>"}, {@code PonderTalk create: "/team/<cell>"}); the owner of a
+     * team cell sets it once, before the cell takes input.
+     */
+    public void teamLink(TeamLink link) {
+        runtime.teamLink(link);
+    }
+
+    /** Where events and PonderTalk text from other cells enter this cell, under its authorisation policies. */
+    public TeamArrivals arrivals() {
+        return new TeamArrivals(runtime);
+    }
+
     /** A shell session: units whose variables persist from one to the next. */
     public final class Session {
         private final CellRuntime.Variables variables = new CellRuntime.Variables();
@@ -273,8 +297,39 @@ public final class PolicyEngine {
     }
 
     /** The root domain. */
-    public Domain root() {
+    public DomainHandle root() {
         return runtime.root();
+    }
+
+    /** A new, empty domain, in no domain yet. */
+    public DomainHandle newDomain() {
+        return new Domain(runtime);
+    }
+
+    /**
+     * A new, empty domain that also answers the {@link net.smc.policy.api.Op} operations of the Java
+     * object {@code operations} (which win over the domain's own), named as its class is
+     * ({@link net.smc.policy.api.Managed}): a domain that paths run through and that has operations of its own.
+     */
+    public DomainHandle newDomain(Object operations) {
+        return runtime.newDomainWith(Objects.requireNonNull(operations, "operations"));
+    }
+
+    /** A new event template with these attribute names, in no domain yet. */
+    public EventHandle newEventTemplate(List<String> attributeNames) {
+        return new EventTemplate(runtime, attributeNames);
+    }
+
+    /**
+     * Tells {@code listener} of every policy created from now on (by a factory, {@code root load:} or
+     * Java), until {@link #unlistenCreations}.
+     */
+    public void listenCreations(Consumer<? super Handle> listener) {
+        runtime.listenCreations(listener);
+    }
+
+    public void unlistenCreations(Consumer<? super Handle> listener) {
+        runtime.unlistenCreations(listener);
     }
 
     /**
@@ -294,7 +349,7 @@ public final class PolicyEngine {
      * @return {@code false} when the event could not be raised (the error was reported)
      */
     public boolean raise(String templatePath, Object... values) {
-        EventTemplate template;
+        EventHandle template;
         try {
             template = template(templatePath);
         } catch (PonderError e) {
@@ -309,7 +364,7 @@ public final class PolicyEngine {
      *
      * @throws PonderError when there is nothing at the path or it is not an event template
      */
-    public EventTemplate template(String path) {
+    public EventHandle template(String path) {
         Object found = runtime.resolve(path);
         if (!(found instanceof EventTemplate t)) {
             throw new PonderError("'" + path + "' is a " + Values.className(found) + ", not an EventTemplate");
@@ -318,7 +373,7 @@ public final class PolicyEngine {
     }
 
     /** Raises an event of a template from Java, as {@link #raise(String, Object...)} does. */
-    public boolean raise(EventTemplate template, Object... values) {
+    public boolean raise(EventHandle template, Object... values) {
         if (exited()) {
             return false;
         }
@@ -329,7 +384,7 @@ public final class PolicyEngine {
             }
             Execution ex = runtime.newExecution();
             try {
-                template.raise(ex, converted);
+                ((EventTemplate) template).raise(ex, converted);
             } finally {
                 runtime.finish(ex);
             }
@@ -364,6 +419,11 @@ public final class PolicyEngine {
         return exitStatus == null ? OptionalInt.empty() : OptionalInt.of(exitStatus);
     }
 
+    /** The class name PonderTalk shows for a value ({@code Number}, {@code Domain}, a managed class's name ...). */
+    public static String className(Object value) {
+        return Values.className(value);
+    }
+
     /** The printed form of a value, as {@code root print:} shows it. */
     public static String print(Object value) {
         return Values.print(value);
@@ -375,7 +435,7 @@ public final class PolicyEngine {
     }
 
     /** Wraps a Java object with {@link net.smc.policy.api.Op} annotations as a managed object. */
-    public static ManagedObject manage(Object javaObject) {
+    public static Handle manage(Object javaObject) {
         return ManagedObject.wrap(javaObject);
     }
 }

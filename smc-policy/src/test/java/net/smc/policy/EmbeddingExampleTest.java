@@ -9,7 +9,8 @@ import java.math.BigDecimal;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import net.smc.policy.runtime.Domain;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 import net.smc.policy.api.Op;
 import org.junit.jupiter.api.Test;
 
@@ -58,8 +59,8 @@ class EmbeddingExampleTest {
 
         assertEquals(List.of("set to 7.0"), lines);
         assertTrue(errors.isEmpty(), errors::toString);
-        Domain root = cell.root();
-        assertEquals(7.0, ((Thermometer) ((net.smc.policy.runtime.ManagedObject) root.get("t")).impl()).celsius());
+        DomainHandle root = cell.root();
+        assertEquals(7.0, ((Thermometer) ((Handle) root.get("t")).impl()).celsius());
     }
 
     @Test
@@ -87,6 +88,6 @@ class EmbeddingExampleTest {
 
         assertTrue(result.ok(), () -> result + " " + errors);
         assertEquals(List.of("alarm boiler at level 7", "alarm valve at level 9", "[boiler, valve]"), lines);
-        assertEquals(new BigDecimal("9"), ((Domain) cell.resolve("root/log")).get("valve"));
+        assertEquals(new BigDecimal("9"), ((DomainHandle) cell.resolve("root/log")).get("valve"));
     }
 }

@@ -15,10 +15,12 @@ import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.comm.CommunicationManager;
 import net.smc.core.comm.SenderSettings;
 import net.smc.core.discovery.DiscoveryObject;
+import net.smc.core.message.CellRequest;
 import net.smc.core.message.Identity;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.mission.RoleInterface;
+import net.smc.core.role.RoleLoadException;
 import net.smc.core.role.Caller;
 import net.smc.core.role.ExternalGateway;
 import net.smc.core.role.ExternalInterface;
@@ -40,6 +42,8 @@ import net.smc.core.transport.Scheduler;
 import net.smc.core.transport.Transport;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.TeamAddress;
+import net.smc.policy.api.TeamLink;
 import net.smc.policy.RunResult;
 
 /**
@@ -127,7 +131,7 @@ public final class Cell {
             }
 
             @Override
-            public void loadRole(String role, PolicyStore from) {
+            public void loadRole(String role, PolicyStore from) throws RoleLoadException {
                 roles.load(roleOf(role, from));
             }
 
@@ -154,6 +158,22 @@ public final class Cell {
             }
 
             @Override
+            public void receiveEvent(Caller caller, String path, String selector, String event,
+                                     Map<String, Object> attributes) {
+                gateway.receiveEvent(caller, path, selector, event, attributes);
+            }
+
+            @Override
+            public Object evaluate(Caller caller, String text, boolean printed) {
+                return gateway.evaluate(caller, text, printed);
+            }
+
+            @Override
+            public void report(String error) {
+                engine.runtime().report(new Diagnostic(null, error));
+            }
+
+            @Override
             public List<Object> taskStates() {
                 return Cell.this.taskStates();
             }
@@ -171,6 +191,18 @@ public final class Cell {
         new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
                 .install(engine);
         protocol.register(router);
+        engine.teamLink(new TeamLink() {
+            @Override
+            public long forwardEvent(TeamAddress to, String selector, String event, Map<String, Object> attributes) {
+                return protocol.request(CellRequest.Kind.EVENT, to.cell(), to.path(), selector == null ? "" : selector, event,
+                        WireValues.of(attributes));
+            }
+
+            @Override
+            public long evaluate(String to, String text, boolean printed) {
+                return protocol.request(CellRequest.Kind.EVALUATE, to, "", printed ? "test:" : "execute:", "", text);
+            }
+        });
         if (commanding) {
             loadRepository(b.repository);
         }

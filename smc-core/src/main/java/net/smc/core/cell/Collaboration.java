@@ -49,6 +49,11 @@ final class Collaboration {
         this.assignee = assignee;
     }
 
+    /** The next call number, shared by every request of this cell whose answer is a {@code remoteResult}. */
+    long nextCall() {
+        return nextCall++;
+    }
+
     /** Publishes an event a role of this cell raised; returns how many neighbours it was sent to. */
     int publish(String role, String event, List<Object> values) {
         RoleEvent e = new RoleEvent(role, event, values, ctx.self());

@@ -5,7 +5,7 @@ import java.util.List;
 
 import net.smc.policy.api.Managed;
 import net.smc.policy.api.Op;
-import net.smc.policy.runtime.PArray;
+import net.smc.policy.api.ArrayValue;
 import net.smc.policy.api.PonderError;
 
 /**
@@ -27,23 +27,27 @@ final class TeamObject {
     }
 
     @Op("raise:values:")
-    public BigDecimal raise(String event, PArray values) {
+    public BigDecimal raise(String event, ArrayValue values) {
         String role = cell.publishingRole(event)
                 .orElseThrow(() -> new PonderError("no role of this cell publishes '" + event + "'"));
         return BigDecimal.valueOf(cell.publish(role, event, WireValues.list(values.items())));
     }
 
     @Op("invoke:of:args:")
-    public BigDecimal invoke(String operation, String role, PArray args) {
-        String caller = cell.seats().isEmpty() ? null : cell.seats().get(0).role();
-        if (caller == null) {
-            throw new PonderError("this cell holds no role, so it cannot invoke '" + operation + "' of role '" + role + "'");
-        }
-        return BigDecimal.valueOf(cell.invoke(caller, role, operation, WireValues.list(args.items())));
+    public BigDecimal invoke(String operation, String role, ArrayValue args) {
+        return invoke(operation, role, args.items());
     }
 
     @Op("invoke:of:")
     public BigDecimal invoke(String operation, String role) {
-        return invoke(operation, role, new PArray(List.of()));
+        return invoke(operation, role, List.of());
+    }
+
+    private BigDecimal invoke(String operation, String role, List<Object> args) {
+        String caller = cell.seats().isEmpty() ? null : cell.seats().get(0).role();
+        if (caller == null) {
+            throw new PonderError("this cell holds no role, so it cannot invoke '" + operation + "' of role '" + role + "'");
+        }
+        return BigDecimal.valueOf(cell.invoke(caller, role, operation, WireValues.list(args)));
     }
 }

@@ -21,6 +21,7 @@ import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
 import net.smc.core.message.InvocationResult;
+import net.smc.core.message.CellRequest;
 import net.smc.core.message.RoleEvent;
 import net.smc.core.message.SubtreeReport;
 import net.smc.core.role.Caller;
@@ -89,6 +90,30 @@ final class TeamProtocol {
             throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell takes no remote invocations");
         }
 
+        /**
+         * Raises (or sends as {@code selector}) an event another cell forwarded to the object at
+         * {@code path}, with the caller's subject; this cell's authorisation policies decide.
+         *
+         * @throws PonderError or ExternalCallException when it is refused or fails
+         */
+        default void receiveEvent(Caller caller, String path, String selector, String event, Map<String, Object> attributes) {
+            throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell takes no forwarded events");
+        }
+
+        /**
+         * Evaluates PonderTalk text another cell sent, with the caller's subject, if this cell's
+         * authorisation policies allow it.
+         *
+         * @return the value of its last statement ({@code printed}: the printed form)
+         */
+        default Object evaluate(Caller caller, String text, boolean printed) {
+            throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell evaluates nothing for others");
+        }
+
+        /** Reports an error in the cell's policy engine, as its own errors are. */
+        default void report(String error) {
+        }
+
         /** The state of the running tasks worth handing over, as wire values; empty when none. */
         default List<Object> taskStates() {
             return List.of();
@@ -112,6 +137,7 @@ final class TeamProtocol {
     private final Membership membership;
     private final Supervisor supervisor;
     private final Collaboration collaboration;
+    private final CellRequests cellRequests;
     private Cancellable tickTimer;
     private boolean stopped;
 
@@ -132,6 +158,7 @@ final class TeamProtocol {
         this.membership = new Membership(ctx, st, seating, counts, backup, reports);
         this.supervisor = new Supervisor(ctx, st, seating, counts, backup, recruiter, merge);
         this.collaboration = new Collaboration(ctx, st, assignee);
+        this.cellRequests = new CellRequests(ctx, st, collaboration::nextCall);
     }
 
     /**
@@ -154,7 +181,12 @@ final class TeamProtocol {
         route(router, MessageType.LEAVE, Leave.class, membership::onLeave);
         route(router, MessageType.ROSTER, Roster.class, backup::onRoster);
         route(router, MessageType.INVOCATION, Invocation.class, collaboration::onInvocation);
-        route(router, MessageType.INVOCATION_RESULT, InvocationResult.class, collaboration::onInvocationResult);
+        route(router, MessageType.INVOCATION_RESULT, InvocationResult.class, (env, r) -> {
+            if (!cellRequests.onResult(env, r)) {
+                collaboration.onInvocationResult(env, r);
+            }
+        });
+        route(router, MessageType.CELL_REQUEST, CellRequest.class, cellRequests::onCellRequest);
     }
 
     /** The router selects by type, so the body is of {@code body}'s class: the cast names, it does not choose. */
@@ -255,6 +287,11 @@ final class TeamProtocol {
     /** Invokes an operation of {@code role} on the vehicle that holds it; the answer is raised as {@code remoteResult}. */
     long invoke(String callerRole, String role, String operation, List<Object> args) {
         return collaboration.invoke(callerRole, role, operation, args);
+    }
+
+    /** Sends a request to another cell of the team; the answer is raised as {@code remoteResult}. */
+    long request(CellRequest.Kind kind, String cell, String path, String selector, String event, Object value) {
+        return cellRequests.send(kind, cell, path, selector, event, value);
     }
 
     List<Object> handedOver() {

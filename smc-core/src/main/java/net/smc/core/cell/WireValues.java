@@ -8,8 +8,8 @@ import java.util.List;
 import java.util.Map;
 
 import net.smc.policy.api.Nil;
-import net.smc.policy.runtime.PArray;
-import net.smc.policy.runtime.PHash;
+import net.smc.policy.api.ArrayValue;
+import net.smc.policy.api.HashValue;
 
 /**
  * Java and PonderTalk values as the values messages carry (String, BigDecimal, Boolean, null and
@@ -37,7 +37,7 @@ final class WireValues {
         if (v instanceof Number n) {
             return new BigDecimal(n.toString());
         }
-        if (v instanceof PArray a) {
+        if (v instanceof ArrayValue a) {
             return list(a.items());
         }
         if (v instanceof Collection<?> c) {
@@ -46,7 +46,7 @@ final class WireValues {
         if (v instanceof Object[] array) {
             return list(List.of(array));
         }
-        if (v instanceof PHash h) {
+        if (v instanceof HashValue h) {
             Map<Object, Object> m = new LinkedHashMap<>();
             h.entries().forEach(e -> m.put(e.getKey(), e.getValue()));
             return map(m);

@@ -18,7 +18,7 @@ import net.smc.core.message.MessageType;
  * <p>{@link #DEFAULT} holds the exchanges the paper names as critical (section IV-A: role
  * assignment, capability descriptions) and the other request/reply pairs whose loss would stall a
  * protocol: ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, CAPABILITY_REQUEST, CAPABILITY_REPLY,
- * POLICY_REQUEST, POLICY_REPLY, INVOCATION, INVOCATION_RESULT, and ROLE_EVENT (an event a role
+ * POLICY_REQUEST, POLICY_REPLY, INVOCATION, INVOCATION_RESULT, CELL_REQUEST, and ROLE_EVENT (an event a role
  * publishes for other vehicles' roles happens once: a lost hazard report is a lost hazard).
  * Discovery, heartbeats and subtree reports stay connectionless: they repeat by design, and a
  * heartbeat's loss is the very thing a failure detector measures.
@@ -30,7 +30,8 @@ public record CriticalTypes(Set<MessageType> types) {
     /** The default set; see the class comment. */
     public static final CriticalTypes DEFAULT = of(MessageType.ROLE_ASSIGNMENT, MessageType.ASSIGNMENT_RESPONSE,
             MessageType.CAPABILITY_REQUEST, MessageType.CAPABILITY_REPLY, MessageType.POLICY_REQUEST,
-            MessageType.POLICY_REPLY, MessageType.INVOCATION, MessageType.INVOCATION_RESULT, MessageType.ROLE_EVENT);
+            MessageType.POLICY_REPLY, MessageType.INVOCATION, MessageType.INVOCATION_RESULT, MessageType.ROLE_EVENT,
+            MessageType.CELL_REQUEST);
 
     public CriticalTypes {
         Objects.requireNonNull(types, "types");

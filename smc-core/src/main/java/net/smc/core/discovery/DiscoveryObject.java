@@ -6,11 +6,10 @@ import java.util.Set;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.policy.PolicyEngine;
 import net.smc.policy.api.Managed;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.Handle;
 import net.smc.policy.api.Op;
-import net.smc.policy.runtime.PArray;
+import net.smc.policy.api.ArrayValue;
 import net.smc.policy.api.PonderError;
-import net.smc.policy.runtime.Values;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -45,8 +44,8 @@ public final class DiscoveryObject {
     }
 
     /** Puts this object at {@code root/discovery}; answers its handle. */
-    public ManagedObject install(PolicyEngine cell) {
-        ManagedObject handle = PolicyEngine.manage(this);
+    public Handle install(PolicyEngine cell) {
+        Handle handle = PolicyEngine.manage(this);
         cell.root().put(NAME, handle);
         return handle;
     }
@@ -60,12 +59,12 @@ public final class DiscoveryObject {
      * @throws PonderError when {@code capability} is neither
      */
     @Op(CHECK)
-    public boolean check(String uav, PArray resources, Object capability, Object credential) {
+    public boolean check(String uav, ArrayValue resources, Object capability, Object credential) {
         Set<String> has = resourcesOf(capability);
         Set<String> missing = new LinkedHashSet<>();
         for (Object wanted : resources.items()) {
-            if (!has.contains(Values.print(wanted))) {
-                missing.add(Values.print(wanted));
+            if (!has.contains(PolicyEngine.print(wanted))) {
+                missing.add(PolicyEngine.print(wanted));
             }
         }
         if (!missing.isEmpty()) {
@@ -73,7 +72,7 @@ public final class DiscoveryObject {
             LOG.debug("vehicle {} lacks {}", uav, missing);
             return false;
         }
-        Object presented = credential instanceof ManagedObject m ? m.impl() : credential;
+        Object presented = credential instanceof Handle m ? m.impl() : credential;
         if (!credentials.accepts(uav, presented)) {
             rejectedCredentials++;
             LOG.debug("vehicle {} presented an unacceptable credential", uav);
@@ -111,16 +110,16 @@ public final class DiscoveryObject {
     }
 
     private static Set<String> resourcesOf(Object capability) {
-        Object value = capability instanceof ManagedObject m ? m.impl() : capability;
+        Object value = capability instanceof Handle m ? m.impl() : capability;
         if (value instanceof CapabilitySummary summary) {
             return summary.resources();
         }
-        if (value instanceof PArray names) {
+        if (value instanceof ArrayValue names) {
             Set<String> out = new LinkedHashSet<>();
-            names.items().forEach(n -> out.add(Values.print(n)));
+            names.items().forEach(n -> out.add(PolicyEngine.print(n)));
             return out;
         }
         throw new PonderError("argument 3 of '" + CHECK + "' on Discovery must be a CapabilitySummary or an array of"
-                + " resource names, got " + Values.className(capability));
+                + " resource names, got " + PolicyEngine.className(capability));
     }
 }

@@ -108,6 +108,32 @@ final class ExchangeBodies {
                         : InvocationResult.failed(inReplyTo, r.string8("error", WireFormat.MAX_TEXT));
             });
 
+    static final BodyCodec<CellRequest> CELL_REQUEST = new BodyCodec<>(MessageType.CELL_REQUEST, CellRequest.class,
+            (m, w) -> {
+                w.u8(m.kind().code());
+                w.string8(m.cell());
+                w.string8(m.path());
+                w.string8(m.selector());
+                w.string8(m.event());
+                ValueCodec.writeList(m.values(), w);
+                w.string8(m.caller());
+                w.i64(m.call());
+                w.string8(m.origin());
+                w.string8(m.reply());
+            },
+            r -> {
+                int code = r.u8("kind");
+                CellRequest.Kind kind = CellRequest.Kind.of(code);
+                if (kind == null) {
+                    throw new DecodeException(RejectReason.MALFORMED, "CellRequest.kind is " + code
+                            + "; it is 1 (event) or 2 (evaluate)");
+                }
+                return new CellRequest(kind, r.string8("cell", WireFormat.MAX_SENDER), r.string8("path", WireFormat.MAX_URI),
+                        r.string8("selector", WireFormat.MAX_NAME), r.string8("event", WireFormat.MAX_NAME),
+                        ValueCodec.readList(r, "values"), r.name("caller"), r.i64("call"),
+                        r.string8("origin", WireFormat.MAX_SENDER), r.string8("reply", WireFormat.MAX_TEXT));
+            });
+
     static final List<BodyCodec<?>> ALL = List.of(POLICY_REQUEST, POLICY_REPLY, HEARTBEAT, ACK,
-            ROLE_EVENT, INVOCATION, INVOCATION_RESULT, ACKS, SUBTREE_REPORT);
+            ROLE_EVENT, INVOCATION, INVOCATION_RESULT, ACKS, SUBTREE_REPORT, CELL_REQUEST);
 }

@@ -1,12 +1,13 @@
 package net.smc.core.role;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import net.smc.core.role.ExternalCallException.Kind;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.EventTemplate;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.EventHandle;
+import net.smc.policy.api.Handle;
 import net.smc.policy.api.PonderError;
 
 /**
@@ -44,7 +45,7 @@ public final class ExternalGateway {
         Object receiver;
         String what;
         if (ExternalInterface.MANAGEMENT_OPERATIONS.contains(selector)) {
-            receiver = object;
+            receiver = object.domain();
             what = "management operation '" + selector + "' of role '" + role + "'";
         } else {
             TaskOperation exported = object.role().external().exportedOperation(selector);
@@ -74,12 +75,67 @@ public final class ExternalGateway {
                     + "' is not required by role '" + role + "', so other roles may not raise it there (it requires "
                     + object.role().external().requiredEvents() + ")");
         }
-        Object template = roles.cell().root().get("event") instanceof Domain events ? events.get(event) : null;
-        if (!(template instanceof EventTemplate)) {
+        Object template = roles.cell().root().get("event") instanceof DomainHandle events ? events.get(event) : null;
+        if (!(template instanceof EventHandle)) {
             throw new ExternalCallException(Kind.FAILED, "event '" + event + "' required by role '" + role
                     + "' has no template at root/event/" + event);
         }
         send(caller, object, template, "create:", new Object[] {java.util.Arrays.asList(values)}, "event '" + event + "' of role '" + role + "'");
+    }
+
+    /**
+     * Raises (or sends as {@code selector}) at the object at {@code path} an event another cell's
+     * {@code EventForwarder} forwarded, with the caller's subject in the receiving role: the role
+     * the path lies in ({@code role/<role>/...}), else the cell's first role. This cell's
+     * authorisation policies decide (the action {@code forwardTo:} on the target, or the selector).
+     *
+     * @throws ExternalCallException when this cell holds no role, it is denied, or it fails
+     */
+    public void receiveEvent(Caller caller, String path, String selector, String event, Map<String, Object> attributes) {
+        RoleObject object = receiving(path);
+        String what = "event '" + event + "' forwarded to root/" + path;
+        try {
+            roles.cell().arrivals().receiveEvent(peer(object, caller), path, selector, event, attributes);
+        } catch (PonderError e) {
+            throw refused(caller, object, what, e);
+        }
+    }
+
+    /**
+     * Evaluates PonderTalk text another cell sent, with the caller's subject in the cell's first
+     * role, if an authorisation policy allows the action {@code evaluate:} on that role's domain.
+     *
+     * @return the value of its last statement ({@code printed}: its printed form)
+     * @throws ExternalCallException when this cell holds no role, it is denied, or it fails
+     */
+    public Object evaluate(Caller caller, String text, boolean printed) {
+        RoleObject object = receiving("");
+        try {
+            return roles.cell().arrivals().evaluate(peer(object, caller), object.domain(), "remote:" + caller.cell(), text, printed);
+        } catch (PonderError e) {
+            throw refused(caller, object, "evaluation of PonderTalk text", e);
+        }
+    }
+
+    private RoleObject receiving(String path) {
+        String[] parts = path.split("/");
+        if (parts.length >= 2 && parts[0].equals("role") && roles.roleObject(parts[1]) != null) {
+            return roles.roleObject(parts[1]);
+        }
+        for (String name : roles.loadedRoles()) {
+            return loaded(name);
+        }
+        throw new ExternalCallException(Kind.NO_SUCH_ROLE, "this cell holds no role, so no peer of it may act here");
+    }
+
+    private static ExternalCallException refused(Caller caller, RoleObject object, String what, PonderError e) {
+        if (e.getMessage() != null && e.getMessage().startsWith(DENIAL)) {
+            return new ExternalCallException(Kind.DENIED, "role '" + caller.role() + "' on cell '" + caller.cell()
+                    + "' may not cause " + what + ": denied by the authorisation policies of role '"
+                    + object.role().name() + "' (" + e.getMessage() + ")");
+        }
+        return new ExternalCallException(Kind.FAILED, what + ", from role '" + caller.role() + "' on cell '"
+                + caller.cell() + "', failed: " + e.getMessage());
     }
 
     private RoleObject loaded(String role) {
@@ -95,7 +151,7 @@ public final class ExternalGateway {
             throw new ExternalCallException(Kind.FAILED, what + " has no receiver: its task is missing from root/role/"
                     + object.role().name() + "/task");
         }
-        ManagedObject subject = peer(object, caller);
+        Handle subject = peer(object, caller);
         try {
             return roles.cell().sendAs(subject, receiver, selector, args);
         } catch (PonderError e) {
@@ -110,21 +166,21 @@ public final class ExternalGateway {
     }
 
     /** The caller's subject, made on its first call; it lives as long as the role. */
-    private ManagedObject peer(RoleObject object, Caller caller) {
-        Domain peers = object.part(RoleObject.PEERS);
+    private Handle peer(RoleObject object, Caller caller) {
+        DomainHandle peers = object.part(RoleObject.PEERS);
         Object ofRole = peers.get(caller.role());
         if (ofRole == null) {
-            ofRole = new Domain(roles.cell().runtime());
+            ofRole = roles.cell().newDomain();
             peers.put(caller.role(), ofRole);
         }
-        if (!(ofRole instanceof Domain callers)) {
+        if (!(ofRole instanceof DomainHandle callers)) {
             throw new ExternalCallException(Kind.FAILED, "root/role/" + object.role().name() + "/peers/" + caller.role()
                     + " is not a domain; it must hold the subjects of role '" + caller.role() + "'");
         }
-        if (callers.get(caller.cell()) instanceof ManagedObject existing) {
+        if (callers.get(caller.cell()) instanceof Handle existing) {
             return existing;
         }
-        ManagedObject subject = ManagedObject.wrap(new Peer(caller));
+        Handle subject = PolicyEngine.manage(new Peer(caller));
         callers.put(caller.cell(), subject);
         return subject;
     }

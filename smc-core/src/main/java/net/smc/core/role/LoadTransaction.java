@@ -9,12 +9,10 @@ import net.smc.core.task.TaskDescriptionException;
 import net.smc.policy.PolicyEngine;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
-import net.smc.policy.runtime.AuthorisationPolicy;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedClass;
-import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.ObligationPolicy;
-import net.smc.policy.runtime.Values;
+import net.smc.policy.api.PolicyHandle;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.OpInterfaces;
+import net.smc.policy.api.Handle;
 
 /**
  * One load of a role, all or nothing. In order: bind the missing tasks under
@@ -27,12 +25,12 @@ import net.smc.policy.runtime.Values;
  */
 final class LoadTransaction {
     private final PolicyEngine cell;
-    private final Domain root;
+    private final DomainHandle root;
     private final Role role;
     private final LoadedRole existing;
     private final Reassignment reassignment;
 
-    private final List<ManagedObject> created = new ArrayList<>();
+    private final List<Handle> created = new ArrayList<>();
     private final List<Task> started = new ArrayList<>();
     private final List<String> sourcesRun = new ArrayList<>();
     private final List<String> newPolicies = new ArrayList<>();
@@ -66,7 +64,7 @@ final class LoadTransaction {
      * @return the record of the loaded role (the existing one, extended, on a second load)
      * @throws RoleLoadException with the cell as it was before
      */
-    LoadedRole run() {
+    LoadedRole run() throws RoleLoadException {
         TreeSnapshot base = TreeSnapshot.of(root);
         PolicyFactoryTap.Installed tap = PolicyFactoryTap.install(cell);
         RoleObject object = null;
@@ -80,11 +78,14 @@ final class LoadTransaction {
             tap.close();
             activate(object);
             startTasks();
+        } catch (RoleLoadException e) {
+            tap.close();
+            rollBack(base);
+            throw e;
         } catch (RuntimeException e) {
             tap.close();
             rollBack(base);
-            throw e instanceof RoleLoadException failure ? failure
-                    : new RoleLoadException(role.name(), "the Role-Manager", List.of(e.toString()));
+            throw new RoleLoadException(role.name(), "the Role-Manager", List.of(e.toString()));
         }
         return commit(object);
     }
@@ -103,37 +104,37 @@ final class LoadTransaction {
         return role.tasks().stream().filter(t -> existing == null || !existing.tasks.containsKey(t.name())).toList();
     }
 
-    private RoleObject roleObject() {
+    private RoleObject roleObject() throws RoleLoadException {
         if (existing != null) {
             return existing.object;
         }
         Object holder = root.get(RoleManager.ROLE_DOMAIN);
-        Domain roles;
+        DomainHandle roles;
         if (holder == null) {
-            roles = new Domain(cell.runtime());
+            roles = cell.newDomain();
             root.put(RoleManager.ROLE_DOMAIN, roles);
             createdRoleDomain = true;
-        } else if (holder instanceof Domain d) {
+        } else if (holder instanceof DomainHandle d) {
             roles = d;
         } else {
-            throw fail("the role domain", "root/" + RoleManager.ROLE_DOMAIN + " is a " + Values.className(holder)
+            throw fail("the role domain", "root/" + RoleManager.ROLE_DOMAIN + " is a " + PolicyEngine.className(holder)
                     + "; the Role-Manager keeps roles in a domain there");
         }
         if (roles.get(role.name()) != null) {
             throw fail("the role domain", "root/role/" + role.name() + " is already taken by "
-                    + Values.print(roles.get(role.name())) + ", which this Role-Manager did not load");
+                    + PolicyEngine.print(roles.get(role.name())) + ", which this Role-Manager did not load");
         }
-        RoleObject object = new RoleObject(cell.runtime(), role, reassignment);
-        roles.put(role.name(), object);
+        RoleObject object = new RoleObject(cell, role, reassignment);
+        roles.put(role.name(), object.domain());
         return object;
     }
 
-    private void bindTasks(RoleObject object) {
-        Domain taskDomain = object.part(RoleObject.TASK);
+    private void bindTasks(RoleObject object) throws RoleLoadException {
+        DomainHandle taskDomain = object.part(RoleObject.TASK);
         TreeSnapshot before = TreeSnapshot.of(root);
         for (TaskBinding binding : missingTasks()) {
             Task task;
-            ManagedObject handle;
+            Handle handle;
             try {
                 task = binding.factory().get();
                 if (task == null) {
@@ -161,44 +162,45 @@ final class LoadTransaction {
         // What binding added outside the role (root/task/<name>, event templates) goes with the role.
         TreeSnapshot after = TreeSnapshot.of(root);
         // A root/task or root/event domain made here goes only once empty: other roles' tasks may share it.
-        for (TreeSnapshot.Addition a : before.changesTo(after, after.below(object), root).added()) {
-            (a.value() instanceof Domain ? madeDomains : outside).add(a);
+        for (TreeSnapshot.Addition a : before.changesTo(after, after.below(object.domain()), root).added()) {
+            (a.value() instanceof DomainHandle ? madeDomains : outside).add(a);
         }
     }
 
-    private void checkLocalInterface(RoleObject object) {
-        Domain taskDomain = object.part(RoleObject.TASK);
+    private void checkLocalInterface(RoleObject object) throws RoleLoadException {
+        DomainHandle taskDomain = object.part(RoleObject.TASK);
         for (TaskOperation op : role.local().operations()) {
             Object handle = taskDomain.get(op.task());
-            ManagedClass type = handle instanceof ManagedObject m ? m.type() : null;
+            Handle type = handle instanceof Handle m ? m : null;
             if (type == null || !type.selectors().contains(op.selector())) {
                 throw fail("the local interface", "task '" + op.task() + "' ("
-                        + (type == null ? "missing" : type.name()) + ") has no operation '" + op.selector() + "'");
+                        + (type == null ? "missing" : type.className()) + ") has no operation '" + op.selector() + "'");
             }
         }
     }
 
-    private void runSource(PolicySource source, RoleObject object, PolicyFactoryTap.Installed tap) {
+    private void runSource(PolicySource source, RoleObject object, PolicyFactoryTap.Installed tap) throws RoleLoadException {
         String part = "policy '" + source.label() + "'";
         TreeSnapshot before = TreeSnapshot.of(root);
         RunResult result = source.runIn(cell);
-        List<ManagedObject> made = tap.drain();
+        List<Handle> made = tap.drain();
         created.addAll(made);
         if (!result.ok() || !result.diagnostics().isEmpty()) {
             throw new RoleLoadException(role.name(), part, reasons(result));
         }
         TreeSnapshot after = TreeSnapshot.of(root);
-        TreeSnapshot.Changes changes = before.changesTo(after, after.below(object), root);
+        TreeSnapshot.Changes changes = before.changesTo(after, after.below(object.domain()), root);
         if (!changes.changed().isEmpty()) {
             throw fail(part, "it " + String.join(", ", changes.changed()) + "; a role's files may add entries"
                     + " but must not replace or remove existing ones");
         }
-        checkOwnPart(part, object, RoleObject.POLICY, ObligationPolicy.class, before, newPolicies);
-        checkOwnPart(part, object, RoleObject.AUTH, AuthorisationPolicy.class, before, newAuthorisations);
-        for (ManagedObject policy : made) {
-            String wanted = policy instanceof ObligationPolicy ? RoleObject.POLICY : RoleObject.AUTH;
+        checkOwnPart(part, object, RoleObject.POLICY, true, before, newPolicies);
+        checkOwnPart(part, object, RoleObject.AUTH, false, before, newAuthorisations);
+        for (Handle policy : made) {
+            boolean obligation = policy instanceof PolicyHandle p && p.isObligation();
+            String wanted = obligation ? RoleObject.POLICY : RoleObject.AUTH;
             if (!object.part(wanted).hasObject(policy)) {
-                throw fail(part, "it created " + (policy instanceof ObligationPolicy ? "an obligation" : "an authorisation")
+                throw fail(part, "it created " + (obligation ? "an obligation" : "an authorisation")
                         + " policy that it did not store under root/role/" + role.name() + "/" + wanted
                         + " (the convention of policies/README.md)");
             }
@@ -208,18 +210,18 @@ final class LoadTransaction {
     }
 
     /** New entries of the role's policy or auth domain must be policies of the right kind. */
-    private void checkOwnPart(String part, RoleObject object, String name, Class<?> kind, TreeSnapshot before,
-                              List<String> added) {
-        Domain domain = object.part(name);
+    private void checkOwnPart(String part, RoleObject object, String name, boolean obligations, TreeSnapshot before,
+                              List<String> added) throws RoleLoadException {
+        DomainHandle domain = object.part(name);
         Map<String, Object> earlier = before.entriesOf(domain);
         for (Map.Entry<String, Object> e : domain.entries().entrySet()) {
             if (earlier.containsKey(e.getKey())) {
                 continue;
             }
-            if (!kind.isInstance(e.getValue())) {
+            if (!(e.getValue() instanceof PolicyHandle p && p.isObligation() == obligations)) {
                 throw fail(part, "root/role/" + role.name() + "/" + name + "/" + e.getKey() + " is a "
-                        + Values.className(e.getValue()) + "; root/role/" + role.name() + "/" + name + " holds only "
-                        + (kind == ObligationPolicy.class ? "obligation" : "authorisation") + " policies");
+                        + PolicyEngine.className(e.getValue()) + "; root/role/" + role.name() + "/" + name + " holds only "
+                        + (obligations ? "obligation" : "authorisation") + " policies");
             }
             added.add(e.getKey());
         }
@@ -228,14 +230,14 @@ final class LoadTransaction {
     /** Authorisations first, so that no obligation policy acts before the rules that govern it apply. */
     private void activate(RoleObject object) {
         for (String name : newAuthorisations) {
-            ((AuthorisationPolicy) object.part(RoleObject.AUTH).get(name)).active(true);
+            ((PolicyHandle) object.part(RoleObject.AUTH).get(name)).active(true);
         }
         for (String name : newPolicies) {
-            ((ObligationPolicy) object.part(RoleObject.POLICY).get(name)).active(true);
+            ((PolicyHandle) object.part(RoleObject.POLICY).get(name)).active(true);
         }
     }
 
-    private void startTasks() {
+    private void startTasks() throws RoleLoadException {
         for (Map.Entry<String, Task> e : newTasks.entrySet()) {
             started.add(e.getValue());
             try {
@@ -257,7 +259,7 @@ final class LoadTransaction {
                 // The load is failing already; its reason is the one to report.
             }
         }
-        for (ManagedObject policy : created) {
+        for (Handle policy : created) {
             Policies.retire(policy);
         }
         base.restore(root);

@@ -6,10 +6,9 @@ import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Set;
-import net.smc.policy.runtime.AuthorisationPolicy;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedObject;
-import net.smc.policy.runtime.ObligationPolicy;
+import net.smc.policy.api.PolicyHandle;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 
 /** Taking policies out of service, for a failed load and for a withdrawal. */
 final class Policies {
@@ -17,32 +16,27 @@ final class Policies {
     }
 
     /** Deactivates a policy and, for an obligation policy, detaches it from every node it is attached to. */
-    static void retire(ManagedObject policy) {
-        if (policy instanceof ObligationPolicy obligation) {
-            obligation.active(false);
-            for (ManagedObject node : obligation.attachments()) {
-                obligation.detach(node);
-            }
-        } else if (policy instanceof AuthorisationPolicy authorisation) {
-            authorisation.active(false);
+    static void retire(Handle policy) {
+        if (policy instanceof PolicyHandle p) {
+            p.retire();
         }
     }
 
     /** Every managed object reachable from root, root first. */
-    static List<ManagedObject> reachable(Domain root) {
-        List<ManagedObject> out = new ArrayList<>();
-        Set<ManagedObject> seen = Collections.newSetFromMap(new IdentityHashMap<>());
-        ArrayDeque<ManagedObject> queue = new ArrayDeque<>();
+    static List<Handle> reachable(DomainHandle root) {
+        List<Handle> out = new ArrayList<>();
+        Set<Handle> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+        ArrayDeque<Handle> queue = new ArrayDeque<>();
         queue.add(root);
         while (!queue.isEmpty()) {
-            ManagedObject at = queue.poll();
+            Handle at = queue.poll();
             if (!seen.add(at)) {
                 continue;
             }
             out.add(at);
-            if (at instanceof Domain d) {
+            if (at instanceof DomainHandle d) {
                 for (Object value : d.entries().values()) {
-                    if (value instanceof ManagedObject m) {
+                    if (value instanceof Handle m) {
                         queue.add(m);
                     }
                 }
@@ -52,10 +46,10 @@ final class Policies {
     }
 
     /** Every policy stored anywhere under {@code start}. */
-    static List<ManagedObject> under(Domain start) {
-        List<ManagedObject> out = new ArrayList<>();
-        for (ManagedObject m : reachable(start)) {
-            if (m instanceof ObligationPolicy || m instanceof AuthorisationPolicy) {
+    static List<Handle> under(DomainHandle start) {
+        List<Handle> out = new ArrayList<>();
+        for (Handle m : reachable(start)) {
+            if (m instanceof PolicyHandle) {
                 out.add(m);
             }
         }

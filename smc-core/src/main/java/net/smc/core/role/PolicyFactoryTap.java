@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.Handle;
 
 /**
  * Hears of every obligation and authorisation policy a cell creates while a role loads, however a
@@ -18,18 +18,18 @@ final class PolicyFactoryTap {
     /** A listening tap; {@link #close()} stops listening. */
     static final class Installed implements AutoCloseable {
         private final PolicyEngine cell;
-        private final List<ManagedObject> created = new ArrayList<>();
-        private final Consumer<ManagedObject> listener = created::add;
+        private final List<Handle> created = new ArrayList<>();
+        private final Consumer<Handle> listener = created::add;
         private boolean open = true;
 
         private Installed(PolicyEngine cell) {
             this.cell = cell;
-            cell.runtime().listenCreations(listener);
+            cell.listenCreations(listener);
         }
 
         /** Policies created since the last call, in order. */
-        List<ManagedObject> drain() {
-            List<ManagedObject> out = List.copyOf(created);
+        List<Handle> drain() {
+            List<Handle> out = List.copyOf(created);
             created.clear();
             return out;
         }
@@ -39,7 +39,7 @@ final class PolicyFactoryTap {
         public void close() {
             if (open) {
                 open = false;
-                cell.runtime().unlistenCreations(listener);
+                cell.unlistenCreations(listener);
             }
         }
     }

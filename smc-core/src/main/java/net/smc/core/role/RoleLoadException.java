@@ -7,7 +7,7 @@ import java.util.List;
  * left behind). Names the role, the part that failed (a policy by its URI or name, a task, an
  * interface) and every reason reported, diagnostics of the cell included.
  */
-public final class RoleLoadException extends RuntimeException {
+public final class RoleLoadException extends Exception {
     private final String role;
     private final String part;
     private final List<String> reasons;

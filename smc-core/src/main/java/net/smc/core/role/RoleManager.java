@@ -11,8 +11,8 @@ import java.util.Optional;
 import java.util.Set;
 import net.smc.core.task.Task;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -93,7 +93,7 @@ public final class RoleManager {
      * @throws RoleLoadException when any part fails; the cell is then as it was
      * @throws IllegalStateException when called while another load runs (from a task started by it, say)
      */
-    public Loaded load(Role role) {
+    public Loaded load(Role role) throws RoleLoadException {
         Objects.requireNonNull(role, "role");
         if (loading) {
             throw new IllegalStateException("role '" + role.name() + "' cannot be loaded while another role is loading");
@@ -139,19 +139,19 @@ public final class RoleManager {
         for (Task task : role.bound) {
             task.unbind();
         }
-        for (ManagedObject policy : Policies.under(role.object)) {
+        for (Handle policy : Policies.under(role.object.domain())) {
             Policies.retire(policy);
         }
         for (TreeSnapshot.Addition addition : role.outside) {
             addition.undo();
         }
         for (TreeSnapshot.Addition made : role.madeDomains) {
-            if (made.value() instanceof Domain d && d.entries().isEmpty()) {
+            if (made.value() instanceof DomainHandle d && d.entries().isEmpty()) {
                 made.undo();
             }
         }
-        if (cell.root().get(ROLE_DOMAIN) instanceof Domain holder) {
-            if (holder.get(name) == role.object) {
+        if (cell.root().get(ROLE_DOMAIN) instanceof DomainHandle holder) {
+            if (holder.get(name) == role.object.domain()) {
                 holder.remove(name);
             }
             if (madeRoleDomain && holder.entries().isEmpty()) {
@@ -160,8 +160,8 @@ public final class RoleManager {
             }
         }
         // Emptying the role's domains also drops the parent links they gave to objects outside it.
-        for (ManagedObject node : Policies.reachable(role.object)) {
-            if (node instanceof Domain d) {
+        for (Handle node : Policies.reachable(role.object.domain())) {
+            if (node instanceof DomainHandle d) {
                 d.removeAll();
             }
         }

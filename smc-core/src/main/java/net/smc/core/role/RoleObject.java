@@ -3,11 +3,10 @@ package net.smc.core.role;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import net.smc.policy.runtime.AuthorisationPolicy;
-import net.smc.policy.runtime.CellRuntime;
-import net.smc.policy.runtime.Domain;
+import net.smc.policy.api.PolicyHandle;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.PolicyEngine;
 import net.smc.policy.api.Managed;
-import net.smc.policy.runtime.ObligationPolicy;
 import net.smc.policy.api.Op;
 import net.smc.policy.api.PonderError;
 
@@ -20,22 +19,28 @@ import net.smc.policy.api.PonderError;
  * plus {@code reassign:scheme:}, which the paper's Table II sends to {@code root/role/commander}.
  */
 @Managed("Role")
-final class RoleObject extends Domain {
+final class RoleObject {
     static final String POLICY = "policy";
     static final String AUTH = "auth";
     static final String TASK = "task";
     static final String PEERS = "peers";
 
     private final Reassignment reassignment;
+    private final DomainHandle domain;
     private Role role;
 
-    RoleObject(CellRuntime runtime, Role role, Reassignment reassignment) {
-        super(runtime);
+    RoleObject(PolicyEngine cell, Role role, Reassignment reassignment) {
         this.role = role;
         this.reassignment = reassignment;
+        this.domain = cell.newDomain(this);
         for (String part : List.of(POLICY, AUTH, TASK, PEERS)) {
-            put(part, new Domain(runtime));
+            domain.put(part, cell.newDomain());
         }
+    }
+
+    /** The domain {@code root/role/<name>}, which answers this object's operations. */
+    DomainHandle domain() {
+        return domain;
     }
 
     Role role() {
@@ -51,8 +56,8 @@ final class RoleObject extends Domain {
      *
      * @throws PonderError when a script removed or replaced it
      */
-    Domain part(String name) {
-        if (get(name) instanceof Domain d) {
+    DomainHandle part(String name) {
+        if (domain.get(name) instanceof DomainHandle d) {
             return d;
         }
         throw new PonderError("root/role/" + role.name() + "/" + name + " is missing or not a domain; role '"
@@ -87,8 +92,7 @@ final class RoleObject extends Domain {
     /** Whether the role's obligation or authorisation policy of this name is active. */
     @Op("isEnabled:")
     public boolean isEnabled(String policy) {
-        Object p = policyNamed(policy);
-        return p instanceof ObligationPolicy o ? o.isActive() : ((AuthorisationPolicy) p).active();
+        return policyNamed(policy).active();
     }
 
     /** Enables one of the role's policies: how a role-mission controls its own policies (section II-B.3). */
@@ -117,18 +121,14 @@ final class RoleObject extends Domain {
     }
 
     private boolean setActive(String policy, boolean on) {
-        Object p = policyNamed(policy);
-        if (p instanceof ObligationPolicy o) {
-            return o.active(on);
-        }
-        return ((AuthorisationPolicy) p).active(on);
+        return policyNamed(policy).active(on);
     }
 
-    private Object policyNamed(String policy) {
+    private PolicyHandle policyNamed(String policy) {
         for (String part : List.of(POLICY, AUTH)) {
             Object p = part(part).get(policy);
-            if (p instanceof ObligationPolicy || p instanceof AuthorisationPolicy) {
-                return p;
+            if (p instanceof PolicyHandle found) {
+                return found;
             }
         }
         throw new PonderError("role '" + role.name() + "' has no policy '" + policy + "' (it has " + allPolicyNames() + ")");

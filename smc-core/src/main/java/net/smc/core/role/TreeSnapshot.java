@@ -9,8 +9,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 
 /**
  * The entries of every domain reachable from root at one moment. The Role-Manager takes one before
@@ -18,24 +18,24 @@ import net.smc.policy.runtime.ManagedObject;
  * what the file added or changed.
  */
 final class TreeSnapshot {
-    private final Map<Domain, LinkedHashMap<String, Object>> domains;
+    private final Map<DomainHandle, LinkedHashMap<String, Object>> domains;
 
-    private TreeSnapshot(Map<Domain, LinkedHashMap<String, Object>> domains) {
+    private TreeSnapshot(Map<DomainHandle, LinkedHashMap<String, Object>> domains) {
         this.domains = domains;
     }
 
-    static TreeSnapshot of(Domain root) {
-        Map<Domain, LinkedHashMap<String, Object>> found = new IdentityHashMap<>();
-        ArrayDeque<Domain> queue = new ArrayDeque<>();
+    static TreeSnapshot of(DomainHandle root) {
+        Map<DomainHandle, LinkedHashMap<String, Object>> found = new IdentityHashMap<>();
+        ArrayDeque<DomainHandle> queue = new ArrayDeque<>();
         queue.add(root);
         while (!queue.isEmpty()) {
-            Domain d = queue.poll();
+            DomainHandle d = queue.poll();
             if (found.containsKey(d)) {
                 continue;
             }
             found.put(d, new LinkedHashMap<>(d.entries()));
             for (Object value : d.entries().values()) {
-                if (value instanceof Domain child) {
+                if (value instanceof DomainHandle child) {
                     queue.add(child);
                 }
             }
@@ -44,22 +44,22 @@ final class TreeSnapshot {
     }
 
     /** A domain's entries in this snapshot (empty if it was not reachable then). */
-    Map<String, Object> entriesOf(Domain d) {
+    Map<String, Object> entriesOf(DomainHandle d) {
         Map<String, Object> entries = domains.get(d);
         return entries == null ? Map.of() : Collections.unmodifiableMap(entries);
     }
 
     /** Every domain reachable from {@code start} in this snapshot ({@code start} included). */
-    Set<Domain> below(Domain start) {
-        Set<Domain> out = Collections.newSetFromMap(new IdentityHashMap<>());
-        ArrayDeque<Domain> queue = new ArrayDeque<>();
+    Set<DomainHandle> below(DomainHandle start) {
+        Set<DomainHandle> out = Collections.newSetFromMap(new IdentityHashMap<>());
+        ArrayDeque<DomainHandle> queue = new ArrayDeque<>();
         queue.add(start);
         while (!queue.isEmpty()) {
-            Domain d = queue.poll();
+            DomainHandle d = queue.poll();
             if (out.add(d)) {
                 Map<String, Object> entries = domains.get(d);
                 for (Object value : entries == null ? d.entries().values() : entries.values()) {
-                    if (value instanceof Domain child) {
+                    if (value instanceof DomainHandle child) {
                         queue.add(child);
                     }
                 }
@@ -69,7 +69,7 @@ final class TreeSnapshot {
     }
 
     /** One entry that a load added to a domain outside the role's own. */
-    record Addition(Domain domain, String name, Object value) {
+    record Addition(DomainHandle domain, String name, Object value) {
         /** Removes the entry, unless something else has replaced it since. */
         void undo() {
             if (domain.get(name) == value) {
@@ -86,11 +86,11 @@ final class TreeSnapshot {
      * The entries replaced or removed in any domain of this snapshot (each described with its
      * path), and the entries added to those of them not in {@code ownDomains}.
      */
-    Changes changesTo(TreeSnapshot later, Set<Domain> ownDomains, Domain root) {
+    Changes changesTo(TreeSnapshot later, Set<DomainHandle> ownDomains, DomainHandle root) {
         List<Addition> added = new ArrayList<>();
         List<String> changed = new ArrayList<>();
-        for (Map.Entry<Domain, LinkedHashMap<String, Object>> e : domains.entrySet()) {
-            Domain d = e.getKey();
+        for (Map.Entry<DomainHandle, LinkedHashMap<String, Object>> e : domains.entrySet()) {
+            DomainHandle d = e.getKey();
             LinkedHashMap<String, Object> after = later.domains.get(d);
             if (after == null) {
                 continue;
@@ -118,16 +118,16 @@ final class TreeSnapshot {
      * were not then (they were made by the failed load; emptying them also drops the parent links
      * they gave to older objects).
      */
-    void restore(Domain root) {
+    void restore(DomainHandle root) {
         TreeSnapshot now = of(root);
-        for (Map.Entry<Domain, LinkedHashMap<String, Object>> e : domains.entrySet()) {
-            Domain d = e.getKey();
+        for (Map.Entry<DomainHandle, LinkedHashMap<String, Object>> e : domains.entrySet()) {
+            DomainHandle d = e.getKey();
             if (!sameEntries(d.entries(), e.getValue())) {
                 d.removeAll();
                 e.getValue().forEach(d::put);
             }
         }
-        for (Domain d : now.domains.keySet()) {
+        for (DomainHandle d : now.domains.keySet()) {
             if (!domains.containsKey(d)) {
                 d.removeAll();
             }
@@ -155,7 +155,7 @@ final class TreeSnapshot {
         if (a == b) {
             return true;
         }
-        if (a instanceof ManagedObject || b instanceof ManagedObject) {
+        if (a instanceof Handle || b instanceof Handle) {
             return false;
         }
         if (a instanceof BigDecimal x && b instanceof BigDecimal y) {
@@ -164,7 +164,7 @@ final class TreeSnapshot {
         return (a instanceof String || a instanceof Boolean) && a.equals(b);
     }
 
-    private static String pathOf(Domain d, Domain root) {
+    private static String pathOf(DomainHandle d, DomainHandle root) {
         String path = d == root ? "root" : d.path();
         return path == null ? "<a domain>" : path;
     }

@@ -3,7 +3,7 @@ package net.smc.core.task;
 import java.util.Objects;
 import net.smc.core.capability.TaskDescription;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.Handle;
 import net.smc.policy.api.Op;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -39,7 +39,7 @@ public abstract class Task {
     private static final Logger LOG = LoggerFactory.getLogger(Task.class);
 
     private boolean running;
-    private ManagedObject handle;
+    private Handle handle;
     private TaskEvents events;
     private long droppedEvents;
     private TaskListener listener;
@@ -95,9 +95,9 @@ public abstract class Task {
     }
 
     /** The task's one managed-object handle, the same object every time (domains and policies compare by identity). */
-    public final ManagedObject managed() {
+    public final Handle managed() {
         if (handle == null) {
-            handle = ManagedObject.wrap(this);
+            handle = PolicyEngine.manage(this);
         }
         return handle;
     }

@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import net.smc.policy.runtime.ManagedClass;
+import net.smc.policy.api.OpInterfaces;
 import net.smc.core.capability.EventDescription;
 import net.smc.core.capability.OperationDescription;
 import net.smc.core.capability.TaskDescription;
@@ -66,7 +66,7 @@ public final class TaskDescriber {
         String task = taskClass.getSimpleName();
         Set<OperationDescription> operations = new LinkedHashSet<>();
         TreeMap<String, EventDescription> events = new TreeMap<>();
-        for (Class<?> iface : ManagedClass.interfacesOf(taskClass)) {
+        for (Class<?> iface : OpInterfaces.of(taskClass)) {
             TaskInterface marker = iface.getAnnotation(TaskInterface.class);
             if (marker == null) {
                 continue;

@@ -7,9 +7,9 @@ import java.util.Map;
 import net.smc.core.capability.EventDescription;
 import net.smc.core.capability.TaskDescription;
 import net.smc.policy.PolicyEngine;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.EventTemplate;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.EventHandle;
+import net.smc.policy.api.Handle;
 
 /**
  * A task's binding to one cell: where it sits ({@code root/task/<task>}) and the event template of
@@ -29,9 +29,9 @@ final class TaskEvents {
     private final PolicyEngine cell;
     private final Task task;
     private final String taskName;
-    private final Map<String, EventTemplate> templates;
+    private final Map<String, EventHandle> templates;
 
-    private TaskEvents(PolicyEngine cell, Task task, String taskName, Map<String, EventTemplate> templates) {
+    private TaskEvents(PolicyEngine cell, Task task, String taskName, Map<String, EventHandle> templates) {
         this.cell = cell;
         this.task = task;
         this.taskName = taskName;
@@ -46,27 +46,27 @@ final class TaskEvents {
                     + "', which is not a PonderTalk identifier (a letter, then letters, digits or _), so it cannot be"
                     + " root/" + TASKS + "/<name>");
         }
-        ManagedObject handle = task.managed();
-        Domain root = cell.root();
-        Domain eventDomain = domainAt(root, EVENTS);
+        Handle handle = task.managed();
+        DomainHandle root = cell.root();
+        DomainHandle eventDomain = domainAt(root, EVENTS);
         Object taskDomain = root.get(TASKS);
-        if (taskDomain != null && !(taskDomain instanceof Domain)) {
+        if (taskDomain != null && !(taskDomain instanceof DomainHandle)) {
             throw occupied("root/" + TASKS, taskDomain, "a domain");
         }
-        Object sitting = taskDomain instanceof Domain d ? d.get(description.task()) : null;
+        Object sitting = taskDomain instanceof DomainHandle d ? d.get(description.task()) : null;
         if (sitting != null && sitting != handle) {
             throw occupied("root/" + TASKS + "/" + description.task(), sitting, "this task");
         }
-        Map<String, EventTemplate> templates = new LinkedHashMap<>();
+        Map<String, EventHandle> templates = new LinkedHashMap<>();
         List<EventDescription> missing = new ArrayList<>();
         for (EventDescription event : description.events()) {
             Object existing = eventDomain == null ? null : eventDomain.get(event.name());
             List<String> names = event.attributes().stream().map(EventDescription.Attribute::name).toList();
             if (existing == null) {
                 missing.add(event);
-            } else if (existing instanceof EventTemplate t && t.attributeNames().equals(names)) {
+            } else if (existing instanceof EventHandle t && t.attributeNames().equals(names)) {
                 templates.put(event.name(), t);
-            } else if (existing instanceof EventTemplate t) {
+            } else if (existing instanceof EventHandle t) {
                 throw new IllegalStateException("cannot bind task " + description.task() + ": root/" + EVENTS + "/"
                         + event.name() + " is an event template with attributes " + t.attributeNames() + ", but the task's event '"
                         + event.name() + "' has " + names + "; an event's attribute names must match its template's");
@@ -76,29 +76,29 @@ final class TaskEvents {
         }
         // Nothing can fail from here on.
         if (eventDomain == null) {
-            eventDomain = new Domain(cell.runtime());
+            eventDomain = cell.newDomain();
             root.put(EVENTS, eventDomain);
         }
         for (EventDescription event : missing) {
-            EventTemplate t = new EventTemplate(cell.runtime(),
+            EventHandle t = cell.newEventTemplate(
                     event.attributes().stream().map(EventDescription.Attribute::name).toList());
             eventDomain.put(event.name(), t);
             templates.put(event.name(), t);
         }
-        if (!(taskDomain instanceof Domain)) {
-            taskDomain = new Domain(cell.runtime());
+        if (!(taskDomain instanceof DomainHandle)) {
+            taskDomain = cell.newDomain();
             root.put(TASKS, taskDomain);
         }
-        ((Domain) taskDomain).put(description.task(), handle);
+        ((DomainHandle) taskDomain).put(description.task(), handle);
         return new TaskEvents(cell, task, description.task(), templates);
     }
 
-    private static Domain domainAt(Domain root, String name) {
+    private static DomainHandle domainAt(DomainHandle root, String name) {
         Object found = root.get(name);
-        if (found != null && !(found instanceof Domain)) {
+        if (found != null && !(found instanceof DomainHandle)) {
             throw occupied("root/" + name, found, "a domain");
         }
-        return (Domain) found;
+        return (DomainHandle) found;
     }
 
     private static IllegalStateException occupied(String path, Object found, String wanted) {
@@ -111,7 +111,7 @@ final class TaskEvents {
     }
 
     boolean raise(String event, Object[] values) {
-        EventTemplate template = templates.get(event);
+        EventHandle template = templates.get(event);
         if (template == null) {
             throw new IllegalArgumentException("task " + taskName + " has no event '" + event + "'; its events are "
                     + templates.keySet());
@@ -125,7 +125,7 @@ final class TaskEvents {
     }
 
     void unbind() {
-        if (cell.root().get(TASKS) instanceof Domain d && d.get(taskName) == task.managed()) {
+        if (cell.root().get(TASKS) instanceof DomainHandle d && d.get(taskName) == task.managed()) {
             d.remove(taskName);
         }
     }

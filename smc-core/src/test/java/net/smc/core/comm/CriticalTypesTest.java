@@ -17,7 +17,8 @@ class CriticalTypesTest {
     void default_holdsTheRequestReplyExchanges_andNotDiscoveryOrHeartbeats() {
         assertEquals(EnumSet.of(MessageType.ROLE_ASSIGNMENT, MessageType.ASSIGNMENT_RESPONSE,
                 MessageType.CAPABILITY_REQUEST, MessageType.CAPABILITY_REPLY, MessageType.POLICY_REQUEST,
-                MessageType.POLICY_REPLY, MessageType.INVOCATION, MessageType.INVOCATION_RESULT, MessageType.ROLE_EVENT),
+                MessageType.POLICY_REPLY, MessageType.INVOCATION, MessageType.INVOCATION_RESULT, MessageType.ROLE_EVENT,
+                MessageType.CELL_REQUEST),
                 EnumSet.copyOf(CriticalTypes.DEFAULT.types()));
         assertFalse(CriticalTypes.DEFAULT.contains(MessageType.HEARTBEAT));
         assertFalse(CriticalTypes.DEFAULT.contains(MessageType.DISCOVERY));

@@ -184,4 +184,21 @@ class CodecRoundTripTest {
     void anInvocationWithANegativeCall_isRefused() {
         assertThrows(IllegalArgumentException.class, () -> new Invocation("r", "o", List.of(), "c", -1, "", ""));
     }
+
+    @Test
+    void aCellRequest_survivesTheWire() {
+        CellRequest r = new CellRequest(CellRequest.Kind.EVENT, "a1", "role/aggregator", "", "hazardDetected",
+                List.of(List.of("#map", "kind", "gas")), "hdetector", 3, "d2", "10.0.0.7:4001");
+        assertEquals(r, codec.roundTrip(new Envelope("d1", 9, r)).body());
+        CellRequest text = new CellRequest(CellRequest.Kind.EVALUATE, "a1", "", "test:", "", List.of("1 + 2."),
+                "hdetector", 4, "", "");
+        assertEquals(text, codec.roundTrip(new Envelope("d1", 10, text)).body());
+    }
+
+    @Test
+    void aCellRequestToEvaluateAnythingButText_isRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new CellRequest(
+                CellRequest.Kind.EVALUATE, "a1", "", "execute:", "", List.of(java.math.BigDecimal.ONE), "r", 1, "", ""));
+        assertTrue(e.getMessage().contains("carries its text as a string"), e.getMessage());
+    }
 }

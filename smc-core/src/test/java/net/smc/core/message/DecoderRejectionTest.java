@@ -64,7 +64,7 @@ class DecoderRejectionTest {
 
     @Test
     void unassignedTypeCode_isUnknownType() {
-        for (int code : new int[] {0x00, 0x13, 0xFE}) {
+        for (int code : new int[] {0x00, 0x14, 0xFE}) {
             Raw raw = heartbeat();
             raw.type = code;
             reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 37 bytes: type code 0x%02X is"

@@ -98,7 +98,9 @@ class ShippedMissionsTest {
         assertEquals(List.of("commander 1..1", "surveyor 1..1", "aggregator 0..1"),
                 mission.roles().stream().map(r -> r.name() + " " + r.cardinality()).toList());
         assertEquals(List.of("surveyor", "aggregator"), mission.tree().childrenOf("commander"));
-        assertEquals(40.0, mission.parameter("soldierX").orElseThrow().asDouble());
+        // Where the soldier is comes from the soldier's own distress call, not from the mission.
+        assertTrue(mission.parameter("soldierX").isEmpty(), "no soldierX parameter");
+        assertEquals(500, mission.parameter("comTimeout").orElseThrow().asInt());
         assertEquals(Duration.ZERO.plusMillis(2000).toMillis(), mission.parameter("failureTimeout").orElseThrow().asLong());
     }
 

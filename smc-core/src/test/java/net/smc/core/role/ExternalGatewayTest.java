@@ -49,7 +49,7 @@ class ExternalGatewayTest {
     private final Caller commander = new Caller("c7", "commander");
     private final Caller relay = new Caller("c9", "relay");
 
-    ExternalGatewayTest() {
+    ExternalGatewayTest() throws RoleLoadException {
         f.roles.load(Role.builder("surveyor").mission(MISSION).authorisation(AUTH).task("Explorer", () -> explorer)
                 .local(new LocalInterface(List.of(GO_TO, VISITED), List.of()))
                 .external(new ExternalInterface(List.of(GO_TO, VISITED), List.of(), List.of(), List.of("alarm")))
@@ -57,21 +57,21 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void exportedOperation_allowedForTheCaller_runs() {
+    void exportedOperation_allowedForTheCaller_runs() throws Exception {
         gateway.invoke(commander, "surveyor", "goTo:", 5);
 
         assertEquals(List.of(BigDecimal.valueOf(5)), explorer.visited);
     }
 
     @Test
-    void exportedOperation_answersItsResult() {
+    void exportedOperation_answersItsResult() throws Exception {
         gateway.invoke(commander, "surveyor", "goTo:", 5);
 
         assertEquals(BigDecimal.ONE, gateway.invoke(commander, "surveyor", "visited"));
     }
 
     @Test
-    void exportedOperation_withNoPolicyForTheCaller_isDenied() {
+    void exportedOperation_withNoPolicyForTheCaller_isDenied() throws Exception {
         ExternalCallException e = assertThrows(ExternalCallException.class, () -> gateway.invoke(relay, "surveyor", "goTo:", 5));
 
         assertEquals(Kind.DENIED, e.kind());
@@ -81,14 +81,14 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void callerActsAsItsPeerSubject() {
+    void callerActsAsItsPeerSubject() throws Exception {
         gateway.invoke(commander, "surveyor", "goTo:", 5);
 
         assertEquals("<Peer root/role/surveyor/peers/commander/c7>", PolicyEngine.print(f.cell.resolve("root/role/surveyor/peers/commander/c7")));
     }
 
     @Test
-    void roleMissionPolicy_disablingTheAuthorisation_deniesLaterCalls() {
+    void roleMissionPolicy_disablingTheAuthorisation_deniesLaterCalls() throws Exception {
         gateway.invoke(commander, "surveyor", "goTo:", 1);
 
         f.cell.raise("root/event/lowBattery");
@@ -100,7 +100,7 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void reenabledAuthorisation_allowsAgain() {
+    void reenabledAuthorisation_allowsAgain() throws Exception {
         f.cell.raise("root/event/lowBattery");
         f.run("root/role/surveyor enable: \"commanderSteers\".");
 
@@ -110,7 +110,7 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void operationNotExported_isRefusedBeforeAuthorisation() {
+    void operationNotExported_isRefusedBeforeAuthorisation() throws Exception {
         ExternalCallException e = assertThrows(ExternalCallException.class, () -> gateway.invoke(commander, "surveyor", "stop"));
 
         assertEquals(Kind.NOT_IN_INTERFACE, e.kind());
@@ -119,7 +119,7 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void managementOperation_isCheckedLikeAnyOther() {
+    void managementOperation_isCheckedLikeAnyOther() throws Exception {
         ExternalCallException e = assertThrows(ExternalCallException.class, () -> gateway.invoke(commander, "surveyor", "policies"));
 
         assertEquals(Kind.DENIED, e.kind());
@@ -127,7 +127,7 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void managementOperation_allowedByAPolicy_answers() {
+    void managementOperation_allowedByAPolicy_answers() throws Exception {
         f.run("""
                 a := root/factory/authpolicy subject: root/role/surveyor/peers/commander action: "policies"
                         target: root/role/surveyor focus: "st".
@@ -140,14 +140,14 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void requiredEvent_raisedByAnAllowedCaller_reachesTheRolesPolicies() {
+    void requiredEvent_raisedByAnAllowedCaller_reachesTheRolesPolicies() throws Exception {
         gateway.raise(commander, "surveyor", "alarm", 4);
 
         assertEquals(List.of("alarm 4"), f.out);
     }
 
     @Test
-    void requiredEvent_raisedByACallerWithoutPermission_isDenied() {
+    void requiredEvent_raisedByACallerWithoutPermission_isDenied() throws Exception {
         ExternalCallException e = assertThrows(ExternalCallException.class, () -> gateway.raise(relay, "surveyor", "alarm", 4));
 
         assertEquals(Kind.DENIED, e.kind());
@@ -156,7 +156,7 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void eventTheRoleDoesNotRequire_isRefused() {
+    void eventTheRoleDoesNotRequire_isRefused() throws Exception {
         ExternalCallException e = assertThrows(ExternalCallException.class,
                 () -> gateway.raise(commander, "surveyor", "lowBattery"));
 
@@ -166,7 +166,7 @@ class ExternalGatewayTest {
     }
 
     @Test
-    void roleNotLoaded_isNamed() {
+    void roleNotLoaded_isNamed() throws Exception {
         ExternalCallException e = assertThrows(ExternalCallException.class, () -> gateway.invoke(commander, "relay", "policies"));
 
         assertEquals(Kind.NO_SUCH_ROLE, e.kind());

@@ -14,8 +14,8 @@ import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.RunResult;
 import net.smc.policy.runtime.AuthorisationPolicy;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 import net.smc.policy.runtime.ObligationPolicy;
 
 /**
@@ -74,13 +74,13 @@ final class Fixture {
      * the value's identity (or printed form for plain values), and whether a policy is active.
      * Two equal descriptions mean the same objects in the same places.
      */
-    static String tree(Domain root) {
+    static String tree(DomainHandle root) {
         StringBuilder out = new StringBuilder();
         describe(root, "root", out, Collections.newSetFromMap(new IdentityHashMap<>()));
         return out.toString();
     }
 
-    private static void describe(Domain d, String path, StringBuilder out, Set<Domain> seen) {
+    private static void describe(DomainHandle d, String path, StringBuilder out, Set<DomainHandle> seen) {
         if (!seen.add(d)) {
             return;
         }
@@ -88,8 +88,8 @@ final class Fixture {
             Object v = e.getValue();
             String at = path + "/" + e.getKey();
             out.append(at).append(" = ");
-            if (v instanceof ManagedObject m) {
-                out.append(m.type().name()).append('@').append(System.identityHashCode(m));
+            if (v instanceof Handle m) {
+                out.append(m.className()).append('@').append(System.identityHashCode(m));
                 if (v instanceof ObligationPolicy p) {
                     out.append(p.isActive() ? " active" : " inactive");
                 } else if (v instanceof AuthorisationPolicy p) {
@@ -99,7 +99,7 @@ final class Fixture {
                 out.append(PolicyEngine.print(v));
             }
             out.append('\n');
-            if (v instanceof Domain child) {
+            if (v instanceof DomainHandle child) {
                 describe(child, at, out, seen);
             }
         }

@@ -33,7 +33,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void runtimeErrorInOnePolicy_amongGoodOnes_leavesTheCellAsItWas() {
+    void runtimeErrorInOnePolicy_amongGoodOnes_leavesTheCellAsItWas() throws Exception {
         Role role = Role.builder("surveyor")
                 .mission(Fixture.printer("surveyor", "good1"))
                 .mission(text("broken", """
@@ -54,7 +54,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void syntaxError_namesThePolicyAndThePosition() {
+    void syntaxError_namesThePolicyAndThePosition() throws Exception {
         RoleLoadException e = failing(Role.builder("surveyor")
                 .mission(Fixture.printer("surveyor", "good"))
                 .mission(text("broken", "p := root/factory/ecapolicy create.\np event: ."))
@@ -65,7 +65,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void missingUri_namesTheUri(@TempDir Path repo) {
+    void missingUri_namesTheUri(@TempDir Path repo) throws Exception {
         Fixture withRepo = new Fixture(new PolicyRepository(repo), "");
         Role role = Role.builder("surveyor").mission("policy:/roles/nowhere/mission").build();
         String before = Fixture.tree(withRepo.cell.root());
@@ -78,7 +78,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void errorReportedByAPolicyWhileTheFileRuns_failsTheLoad() {
+    void errorReportedByAPolicyWhileTheFileRuns_failsTheLoad() throws Exception {
         Fixture failingBoot = new Fixture(null, """
                 bad := root/factory/ecapolicy create.
                 bad event: root/event/go; action: [:n | root/missing frob].
@@ -94,7 +94,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void policyActivatedButNotStored_isCaught_andRetired() {
+    void policyActivatedButNotStored_isCaught_andRetired() throws Exception {
         RoleLoadException e = failing(Role.builder("surveyor").mission(text("stray", """
                 p := root/factory/ecapolicy create.
                 p event: root/event/go; action: [:n | root print: "stray"].
@@ -106,7 +106,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void authorisationStoredAmongObligationPolicies_breaksTheConvention() {
+    void authorisationStoredAmongObligationPolicies_breaksTheConvention() throws Exception {
         RoleLoadException e = failing(Role.builder("surveyor").mission(text("misplaced", """
                 a := root/factory/authpolicy subject: root/role/surveyor/policy action: "*" target: root/event focus: "st".
                 root/role/surveyor/policy at: "a" put: a.
@@ -117,7 +117,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void fileReplacingAnExistingEntry_breaksTheConvention() {
+    void fileReplacingAnExistingEntry_breaksTheConvention() throws Exception {
         RoleLoadException e = failing(Role.builder("surveyor").mission(Fixture.printer("surveyor", "good"))
                 .mission(text("replacer", "root/event at: \"go\" put: (root/factory/event create: #(\"n\")).")).build());
 
@@ -127,7 +127,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void taskThatCannotBeMade_namesTheTask() {
+    void taskThatCannotBeMade_namesTheTask() throws Exception {
         RoleLoadException e = failing(Role.builder("surveyor").mission(Fixture.printer("surveyor", "good"))
                 .task("Explorer", () -> {
                     throw new IllegalStateException("no camera");
@@ -138,7 +138,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void taskThatFailsToStart_stopsTheTasksStartedBeforeIt() {
+    void taskThatFailsToStart_stopsTheTasksStartedBeforeIt() throws Exception {
         Explorer broken = new Explorer() {
             @Override
             protected void onStart() {
@@ -155,7 +155,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void localInterfaceNamingAnOperationTheTaskLacks_failsTheLoad() {
+    void localInterfaceNamingAnOperationTheTaskLacks_failsTheLoad() throws Exception {
         RoleLoadException e = failing(Role.builder("surveyor").task("Explorer", () -> explorer)
                 .local(new LocalInterface(List.of(new TaskOperation("Explorer", "fly:")), List.of())).build());
 
@@ -164,7 +164,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void failedExtension_leavesTheLoadedRoleWorking() {
+    void failedExtension_leavesTheLoadedRoleWorking() throws Exception {
         f.roles.load(Role.builder("surveyor").mission(Fixture.printer("surveyor", "a")).build());
 
         failingExtension();
@@ -175,7 +175,7 @@ class RoleManagerAtomicityTest {
         assertTrue(f.roles.isLoaded("surveyor"));
     }
 
-    private void failingExtension() {
+    private void failingExtension() throws Exception {
         String before = Fixture.tree(f.cell.root());
         Role extended = Role.builder("surveyor").mission(Fixture.printer("surveyor", "a"))
                 .mission(Fixture.printer("surveyor", "b")).mission(text("broken", "root/nothing frob.")).build();
@@ -184,7 +184,7 @@ class RoleManagerAtomicityTest {
     }
 
     @Test
-    void failedFirstLoad_removesTheRoleDomainItMade() {
+    void failedFirstLoad_removesTheRoleDomainItMade() throws Exception {
         failing(Role.builder("surveyor").mission(text("broken", "root/nothing frob.")).build());
 
         assertFalse(f.cell.root().entries().containsKey(RoleManager.ROLE_DOMAIN));

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
-import net.smc.policy.runtime.Domain;
+import net.smc.policy.api.DomainHandle;
 import org.junit.jupiter.api.Test;
 
 class RoleManagerIdempotenceTest {
@@ -21,7 +21,7 @@ class RoleManagerIdempotenceTest {
     }
 
     @Test
-    void loadingTwice_loadsNothingTheSecondTime() {
+    void loadingTwice_loadsNothingTheSecondTime() throws Exception {
         f.roles.load(surveyor().build());
 
         Loaded second = f.roles.load(surveyor().build());
@@ -30,17 +30,17 @@ class RoleManagerIdempotenceTest {
     }
 
     @Test
-    void loadingTwice_leavesOnePolicy_andItFiresOnce() {
+    void loadingTwice_leavesOnePolicy_andItFiresOnce() throws Exception {
         f.roles.load(surveyor().build());
         f.roles.load(surveyor().build());
 
-        assertEquals(1, ((Domain) f.cell.resolve("root/role/surveyor/policy")).entries().size());
+        assertEquals(1, ((DomainHandle) f.cell.resolve("root/role/surveyor/policy")).entries().size());
         f.go(3);
         assertEquals(List.of("a 3"), f.out);
     }
 
     @Test
-    void loadingTwice_makesAndStartsTheTaskOnce() {
+    void loadingTwice_makesAndStartsTheTaskOnce() throws Exception {
         f.roles.load(surveyor().build());
         f.roles.load(surveyor().build());
 
@@ -49,7 +49,7 @@ class RoleManagerIdempotenceTest {
     }
 
     @Test
-    void loadingARoleWithAnExtraFile_runsOnlyTheMissingFile() {
+    void loadingARoleWithAnExtraFile_runsOnlyTheMissingFile() throws Exception {
         f.roles.load(surveyor().build());
 
         Loaded second = f.roles.load(surveyor().mission(Fixture.printer("surveyor", "b")).build());
@@ -61,7 +61,7 @@ class RoleManagerIdempotenceTest {
     }
 
     @Test
-    void theSameFileInTwoRoles_loadsForEach() {
+    void theSameFileInTwoRoles_loadsForEach() throws Exception {
         PolicySource shared = PolicySource.text("shared", "root print: \"loaded\".");
         f.roles.load(Role.builder("surveyor").mission(shared).build());
         f.roles.load(Role.builder("relay").mission(shared).build());

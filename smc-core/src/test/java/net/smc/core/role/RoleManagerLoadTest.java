@@ -8,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import net.smc.policy.runtime.AuthorisationPolicy;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.ManagedObject;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.Handle;
 import net.smc.policy.runtime.ObligationPolicy;
 import org.junit.jupiter.api.Test;
 
@@ -33,17 +33,17 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_putsPoliciesAuthorisationsAndTasksUnderTheRoleDomain() {
+    void load_putsPoliciesAuthorisationsAndTasksUnderTheRoleDomain() throws Exception {
         f.roles.load(surveyor());
 
         assertInstanceOf(ObligationPolicy.class, f.cell.resolve("root/role/surveyor/policy/steer"));
         assertInstanceOf(AuthorisationPolicy.class, f.cell.resolve("root/role/surveyor/auth/maySteer"));
-        assertSame(explorer, ((ManagedObject) f.cell.resolve("root/role/surveyor/task/Explorer")).impl());
-        assertInstanceOf(Domain.class, f.cell.resolve("root/role/surveyor/peers"));
+        assertSame(explorer, ((Handle) f.cell.resolve("root/role/surveyor/task/Explorer")).impl());
+        assertInstanceOf(DomainHandle.class, f.cell.resolve("root/role/surveyor/peers"));
     }
 
     @Test
-    void load_reportsWhatItAdded() {
+    void load_reportsWhatItAdded() throws Exception {
         Loaded loaded = f.roles.load(surveyor());
 
         assertEquals(new Loaded("surveyor", List.of("steer", "maySteer"), List.of("steer"), List.of("maySteer"),
@@ -52,7 +52,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_enablesThePoliciesAndStartsTheTasks() {
+    void load_enablesThePoliciesAndStartsTheTasks() throws Exception {
         f.roles.load(surveyor());
 
         assertTrue(((ObligationPolicy) f.cell.resolve("root/role/surveyor/policy/steer")).isActive());
@@ -62,7 +62,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void loadedRole_actsUnderItsOwnAuthorisations() {
+    void loadedRole_actsUnderItsOwnAuthorisations() throws Exception {
         f.roles.load(surveyor());
 
         f.go(7);
@@ -72,7 +72,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void loadedRole_withoutItsAuthorisation_isDeniedByDefault() {
+    void loadedRole_withoutItsAuthorisation_isDeniedByDefault() throws Exception {
         f.roles.load(Role.builder("surveyor").mission(STEER).task("Explorer", () -> explorer).build());
 
         f.go(7);
@@ -83,18 +83,18 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void load_makesTheRoleDomainOnce_forSeveralRoles() {
+    void load_makesTheRoleDomainOnce_forSeveralRoles() throws Exception {
         f.roles.load(Role.builder("surveyor").mission(Fixture.printer("surveyor", "s")).build());
         f.roles.load(Role.builder("relay").mission(Fixture.printer("relay", "r")).build());
 
-        assertEquals(List.of("surveyor", "relay"), List.copyOf(((Domain) f.cell.resolve("root/role")).entries().keySet()));
+        assertEquals(List.of("surveyor", "relay"), List.copyOf(((DomainHandle) f.cell.resolve("root/role")).entries().keySet()));
         f.go(1);
         assertEquals(List.of("s 1", "r 1"), f.out);
         assertEquals(List.of("surveyor", "relay"), List.copyOf(f.roles.loadedRoles()));
     }
 
     @Test
-    void load_runsPolicyFilesInOrder_missionBeforeAuthorisations() {
+    void load_runsPolicyFilesInOrder_missionBeforeAuthorisations() throws Exception {
         f.roles.load(Role.builder("surveyor")
                 .authorisation(PolicySource.text("auth", "root print: \"auth\"."))
                 .mission(PolicySource.text("mission", "root print: \"mission\"."))
@@ -104,7 +104,7 @@ class RoleManagerLoadTest {
     }
 
     @Test
-    void roleDescription_isAvailableWhileLoaded() {
+    void roleDescription_isAvailableWhileLoaded() throws Exception {
         Role role = surveyor();
         f.roles.load(role);
 

@@ -34,7 +34,7 @@ class RoleManagerWithdrawTest {
             .build();
 
     @Test
-    void withdraw_leavesTheDomainTreeAsBeforeTheLoad() {
+    void withdraw_leavesTheDomainTreeAsBeforeTheLoad() throws Exception {
         String before = Fixture.tree(f.cell.root());
         f.roles.load(surveyor);
         // A call from another role leaves its subject under root/role/surveyor/peers (and is denied).
@@ -48,7 +48,7 @@ class RoleManagerWithdrawTest {
     }
 
     @Test
-    void withdraw_deactivatesThePolicies_soTheyNoLongerFire() {
+    void withdraw_deactivatesThePolicies_soTheyNoLongerFire() throws Exception {
         f.roles.load(surveyor);
         ObligationPolicy steer = (ObligationPolicy) f.cell.resolve("root/role/surveyor/policy/steer");
         AuthorisationPolicy maySteer = (AuthorisationPolicy) f.cell.resolve("root/role/surveyor/auth/maySteer");
@@ -63,7 +63,7 @@ class RoleManagerWithdrawTest {
     }
 
     @Test
-    void withdraw_stopsTheTasks() {
+    void withdraw_stopsTheTasks() throws Exception {
         f.roles.load(surveyor);
 
         f.roles.withdraw("surveyor");
@@ -73,7 +73,7 @@ class RoleManagerWithdrawTest {
     }
 
     @Test
-    void withdraw_keepsARoleDomainItDidNotMake() {
+    void withdraw_keepsARoleDomainItDidNotMake() throws Exception {
         f.run("root at: \"role\" put: root/factory/domain create.");
         f.roles.load(surveyor);
 
@@ -83,7 +83,7 @@ class RoleManagerWithdrawTest {
     }
 
     @Test
-    void withdraw_leavesOtherRolesWorking() {
+    void withdraw_leavesOtherRolesWorking() throws Exception {
         f.roles.load(surveyor);
         f.roles.load(Role.builder("relay").mission(Fixture.printer("relay", "r")).build());
 
@@ -94,7 +94,7 @@ class RoleManagerWithdrawTest {
     }
 
     @Test
-    void withdrawnRole_canBeLoadedAgain() {
+    void withdrawnRole_canBeLoadedAgain() throws Exception {
         f.roles.load(surveyor);
         f.roles.withdraw("surveyor");
 
@@ -106,14 +106,14 @@ class RoleManagerWithdrawTest {
     }
 
     @Test
-    void withdrawingARoleNotLoaded_namesIt() {
+    void withdrawingARoleNotLoaded_namesIt() throws Exception {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> f.roles.withdraw("relay"));
 
         assertEquals("role 'relay' is not loaded on this cell (loaded: [])", e.getMessage());
     }
 
     @Test
-    void taskFailingToStop_isReportedAfterTheWithdrawalCompletes() {
+    void taskFailingToStop_isReportedAfterTheWithdrawalCompletes() throws Exception {
         Explorer stubborn = new Explorer() {
             @Override
             protected void onStop() {

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 class RoleObjectTest {
     private final Fixture f = new Fixture();
 
-    private void loadCommander() {
+    private void loadCommander() throws Exception {
         f.roles.load(Role.builder("commander").manages("surveyor", "aggregator")
                 .mission(Fixture.printer("commander", "a")).task("Explorer", Explorer::new).build());
     }
@@ -25,7 +25,7 @@ class RoleObjectTest {
     }
 
     @Test
-    void reassign_ofAManagedRole_goesToTheReassignmentService() {
+    void reassign_ofAManagedRole_goesToTheReassignmentService() throws Exception {
         loadCommander();
 
         f.run("root/role/commander reassign: \"surveyor\" scheme: \"default\".");
@@ -34,7 +34,7 @@ class RoleObjectTest {
     }
 
     @Test
-    void reassign_ofARoleNotManaged_isAnErrorNamingBoth() {
+    void reassign_ofARoleNotManaged_isAnErrorNamingBoth() throws Exception {
         loadCommander();
 
         String error = failure("root/role/commander reassign: \"relay\" scheme: \"default\".");
@@ -45,7 +45,7 @@ class RoleObjectTest {
     }
 
     @Test
-    void reassign_withoutAReassignmentService_isAnError() {
+    void reassign_withoutAReassignmentService_isAnError() throws Exception {
         RoleManager bare = RoleManager.builder(f.cell).build();
         bare.load(Role.builder("commander").manages("surveyor").build());
 
@@ -55,7 +55,7 @@ class RoleObjectTest {
     }
 
     @Test
-    void managementOperations_describeTheRole() {
+    void managementOperations_describeTheRole() throws Exception {
         loadCommander();
 
         assertEquals("commander", f.run("root/role/commander name"));
@@ -66,7 +66,7 @@ class RoleObjectTest {
     }
 
     @Test
-    void disable_andEnable_switchARolePolicy() {
+    void disable_andEnable_switchARolePolicy() throws Exception {
         loadCommander();
         ObligationPolicy a = (ObligationPolicy) f.cell.resolve("root/role/commander/policy/a");
 
@@ -78,7 +78,7 @@ class RoleObjectTest {
     }
 
     @Test
-    void disable_ofAnUnknownPolicy_namesWhatTheRoleHas() {
+    void disable_ofAnUnknownPolicy_namesWhatTheRoleHas() throws Exception {
         loadCommander();
 
         String error = failure("root/role/commander disable: \"nope\".");

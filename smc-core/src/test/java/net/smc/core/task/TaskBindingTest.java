@@ -12,8 +12,8 @@ import java.util.List;
 import net.smc.policy.PolicyEngine;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.RunResult;
-import net.smc.policy.runtime.Domain;
-import net.smc.policy.runtime.EventTemplate;
+import net.smc.policy.api.DomainHandle;
+import net.smc.policy.api.EventHandle;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
@@ -135,7 +135,7 @@ class TaskBindingTest {
                 p event: root/event/obstacle; action: [:x | root print: x].
                 p active: true.
                 """);
-        EventTemplate before = cell.template("root/event/obstacle");
+        EventHandle before = cell.template("root/event/obstacle");
         explorer.bind(cell);
         assertSame(before, cell.template("root/event/obstacle"));
         explorer.sense(7, 8);
@@ -145,7 +145,7 @@ class TaskBindingTest {
     @Test
     void twoTasksRaisingTheSameEvent_shareItsTemplate() throws Exception {
         explorer.bind(cell);
-        EventTemplate first = cell.template("root/event/obstacle");
+        EventHandle first = cell.template("root/event/obstacle");
         Bumper bumper = new Bumper();
         bumper.bind(cell);
         assertSame(first, cell.template("root/event/obstacle"));
@@ -178,7 +178,7 @@ class TaskBindingTest {
                 + " but the task's event 'obstacle' has [x, y]; an event's attribute names must match its template's",
                 e.getMessage());
         assertFalse(explorer.isBound());
-        assertNull(((Domain) cell.resolve("root/event")).get("arrived"), "no template made");
+        assertNull(((DomainHandle) cell.resolve("root/event")).get("arrived"), "no template made");
         assertNull(cell.root().get("task"), "no task domain made");
     }
 
@@ -224,7 +224,7 @@ class TaskBindingTest {
         explorer.bind(cell);
         explorer.unbind();
         assertFalse(explorer.isBound());
-        assertNull(((Domain) cell.root().get("task")).get("Explorer"));
+        assertNull(((DomainHandle) cell.root().get("task")).get("Explorer"));
         assertEquals(List.of("x", "y"), cell.template("root/event/obstacle").attributeNames());
     }
 

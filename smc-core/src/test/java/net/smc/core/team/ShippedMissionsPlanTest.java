@@ -25,7 +25,8 @@ class ShippedMissionsPlanTest {
     }
 
     private static CapabilitySummary robot(String id) {
-        return Fixtures.vehicle(id, Set.of("motion", "infrared", "communication"), Set.of("Explorer"));
+        // the rescue's robots (net.smc.sim.scenario.RescueScenario): they navigate, assist and aggregate
+        return Fixtures.vehicle(id, Set.of("motion", "video", "communication"), Set.of("Navigator", "Assist", "Aggregator"));
     }
 
     @Test

@@ -87,7 +87,7 @@ public class AuthBench {
                 %s at: "probe" put: q.
                 """.formatted(TARGET, OTHER_TARGET, SUBJECT, SUBJECT), errors);
         cell.endBoot();
-        alarm = cell.template("root/event/alarm");
+        alarm = (EventTemplate) cell.template("root/event/alarm");
         target = (Domain) cell.resolve(TARGET);
         allow = (AuthorisationPolicy) cell.resolve("root/policy/allow");
         unrelated = (AuthorisationPolicy) cell.resolve("root/policy/unrelated");

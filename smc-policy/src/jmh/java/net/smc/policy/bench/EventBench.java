@@ -73,7 +73,7 @@ public class EventBench {
                 root/policy at: "alarm" put: p.
                 """, errors);
         cell.endBoot();
-        alarm = cell.template("root/event/alarm");
+        alarm = (EventTemplate) cell.template("root/event/alarm");
         store = (PHash) cell.resolve("root/store");
         value = BigDecimal.valueOf(level);
 

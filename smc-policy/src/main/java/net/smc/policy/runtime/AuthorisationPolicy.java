@@ -13,7 +13,7 @@ import java.util.List;
  * ({@code repneg}); {@code final} policies cannot be overridden from inner domains.
  */
 @Managed("AuthorisationPolicy")
-public final class AuthorisationPolicy extends ManagedObject {
+public final class AuthorisationPolicy extends ManagedObject implements net.smc.policy.api.PolicyHandle {
     private final CellRuntime runtime;
     final ManagedObject subject;
     final String action;
@@ -105,6 +105,16 @@ public final class AuthorisationPolicy extends ManagedObject {
     }
 
     @Op("active")
+    @Override
+    public boolean isObligation() {
+        return false;
+    }
+
+    @Override
+    public void retire() {
+        active(false);
+    }
+
     public boolean active() {
         return active;
     }

@@ -110,13 +110,32 @@ final class Authoriser {
 
     private void check(Execution ex, Plan plan, int point, Object subject, ManagedObject target, String selector,
                        Object[] values) {
-        if (!decide(ex, plan.points[point], point, subject, target, values)) {
+        if (!decide(ex, plan.points[point], point, subject, target, values, defaultDecision())) {
             throw new PonderError("Ponder2AuthorizationException: " + selector);
         }
     }
 
+    /**
+     * Whether {@code subject} may take {@code action} on {@code target}, checked at both request
+     * points, for an action that is not an operation (an event forwarded from another cell, a
+     * remote evaluation). With {@code explicit}, the target's side needs an authorisation policy
+     * that allows it: the cell's default decision does not.
+     */
+    boolean permits(Execution ex, Object subject, ManagedObject target, String action, Object[] args, boolean explicit) {
+        Plan plan = plan(subject, target, action);
+        if (plan == UNCHECKED) {
+            return !explicit;
+        }
+        if (plan == TOO_MANY_PATHS) {
+            return false;
+        }
+        return decide(ex, plan.points[REQUEST_SUBJECT], REQUEST_SUBJECT, subject, target, args, defaultDecision())
+                && decide(ex, plan.points[REQUEST_TARGET], REQUEST_TARGET, subject, target, args,
+                        !explicit && defaultDecision());
+    }
+
     private boolean decide(Execution ex, Combination[] combinations, int point, Object subject, ManagedObject target,
-                           Object[] values) {
+                           Object[] values, boolean defaultAllows) {
         boolean anyAllow = false;
         for (Combination c : combinations) {
             Boolean decision = first(ex, c.finals, point, subject, target, values);
@@ -130,7 +149,7 @@ final class Authoriser {
                 anyAllow = true;
             }
         }
-        return anyAllow || defaultDecision();
+        return anyAllow || defaultAllows;
     }
 
     private boolean defaultDecision() {

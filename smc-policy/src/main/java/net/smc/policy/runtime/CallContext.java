@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.OpContext;
+import net.smc.policy.api.PonderError;
 import net.smc.policy.lang.SourcePos;
 
 /**
@@ -7,7 +9,7 @@ import net.smc.policy.lang.SourcePos;
  * leading {@code CallContext} parameter: the cell, the sender, the receiver's handle, and a way to
  * call blocks and raise events within the same run.
  */
-public final class CallContext {
+public final class CallContext implements OpContext {
     private final Interpreter interpreter;
     private final Execution execution;
     private final Object receiver;
@@ -25,7 +27,16 @@ public final class CallContext {
         return interpreter.call(execution, block, args);
     }
 
+    @Override
+    public Object callBlock(Object block, Object... args) {
+        if (!(block instanceof Block b)) {
+            throw new PonderError("not a block: " + Numbers.abbreviate(Values.print(block)));
+        }
+        return call(b, args);
+    }
+
     /** Sends a message in this run, as a PonderTalk statement would. */
+    @Override
     public Object send(Object receiverObject, String selector, Object... args) {
         return interpreter.send(execution, receiverObject, selector, args, pos);
     }
@@ -35,11 +46,13 @@ public final class CallContext {
     }
 
     /** The sender: root for top-level statements, the policy for statements inside a policy. */
+    @Override
     public Object subject() {
         return execution.source;
     }
 
     /** The receiver as PonderTalk sees it (the managed-object handle, not its Java implementation). */
+    @Override
     public Object receiver() {
         return receiver;
     }

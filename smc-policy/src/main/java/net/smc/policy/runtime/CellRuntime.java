@@ -11,16 +11,18 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
 import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.Limits;
 import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.api.TeamLink;
 import net.smc.policy.api.TimerScheduler;
-import net.smc.policy.stdlib.StandardObjects;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
 import net.smc.policy.lang.SourceFiles;
@@ -35,10 +37,16 @@ import net.smc.policy.lang.Unit;
  * {@link net.smc.policy.PolicyEngine}.
  */
 public final class CellRuntime {
-    /** Configuration given by the embedding application. */
+    /**
+     * Configuration given by the embedding application.
+     *
+     * @param classes the loadable classes beyond the built-in kinds (the standard objects among them), in order
+     * @param xml     parses XML text into a PonderTalk value ({@code "..." asXML})
+     */
     public record Config(Consumer<String> output, Consumer<Diagnostic> errors, AuthMode auth, LongSupplier clock,
                          RandomGenerator random, Limits limits, PolicyRepository repository,
-                         Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments) {
+                         Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments,
+                         Function<String, Object> xml) {
     }
 
     private final Config config;
@@ -49,8 +57,9 @@ public final class CellRuntime {
     private final Map<String, Path> files = new HashMap<>();
     private final Authoriser authoriser;
     private final List<Consumer<Diagnostic>> listeners = new ArrayList<>();
-    private final List<Consumer<ManagedObject>> creationListeners = new ArrayList<>();
+    private final List<Consumer<? super ManagedObject>> creationListeners = new ArrayList<>();
     private boolean booting = true;
+    private TeamLink teamLink = TeamLink.NONE;
     private long attachCounter;
     private Integer exitStatus;
     /** The status {@link #stop} gave, or -1; set from any thread, read by running executions. */
@@ -64,7 +73,6 @@ public final class CellRuntime {
         registry.put("ObligationPolicy", ObligationPolicy.class);
         registry.put("AuthorisationPolicy", AuthorisationPolicy.class);
         registry.put("DateTime", DateTime.class);
-        registry.putAll(StandardObjects.classes());
         config.classes().forEach(this::register);
         this.root = new Root(this);
         Domain factory = new Domain(this);
@@ -99,6 +107,11 @@ public final class CellRuntime {
         return factories.computeIfAbsent(name, n -> factoryFor(type));
     }
 
+    /** A new domain that also answers the {@code @Op} operations of {@code extension}, which run on it. */
+    public Domain newDomainWith(Object extension) {
+        return new Domain(this, ManagedClass.withOperationsOf(Domain.class, extension));
+    }
+
     public Root root() {
         return root;
     }
@@ -109,6 +122,11 @@ public final class CellRuntime {
 
     public Limits limits() {
         return config.limits();
+    }
+
+    /** Parses XML text into a PonderTalk value, as the embedding engine configured. */
+    Object parseXml(String text) {
+        return config.xml().apply(text);
     }
 
     public LongSupplier clock() {
@@ -209,6 +227,15 @@ public final class CellRuntime {
         return authoriser;
     }
 
+    /** How the standard objects reach other cells of the team; {@code TeamLink.NONE} until the owner sets one. */
+    public TeamLink teamLink() {
+        return teamLink;
+    }
+
+    public void teamLink(TeamLink link) {
+        this.teamLink = Objects.requireNonNull(link, "link");
+    }
+
     /** Whether boot units are still running (authorisation then defaults to allow). */
     public boolean booting() {
         return booting;
@@ -278,16 +305,16 @@ public final class CellRuntime {
      * Tells {@code listener} of every obligation and authorisation policy created from now on,
      * however it was created (a factory, {@code root load:}, Java), until {@link #unlistenCreations}.
      */
-    public void listenCreations(Consumer<ManagedObject> listener) {
+    public void listenCreations(Consumer<? super ManagedObject> listener) {
         creationListeners.add(listener);
     }
 
-    public void unlistenCreations(Consumer<ManagedObject> listener) {
+    public void unlistenCreations(Consumer<? super ManagedObject> listener) {
         creationListeners.remove(listener);
     }
 
     void created(ManagedObject policy) {
-        for (Consumer<ManagedObject> listener : List.copyOf(creationListeners)) {
+        for (Consumer<? super ManagedObject> listener : List.copyOf(creationListeners)) {
             listener.accept(policy);
         }
     }

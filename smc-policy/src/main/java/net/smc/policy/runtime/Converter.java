@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.ArrayValue;
+import net.smc.policy.api.HashValue;
 import net.smc.policy.api.Nil;
 import net.smc.policy.api.PonderError;
 import java.math.BigDecimal;
@@ -91,7 +93,8 @@ interface Converter {
     }
 
     private static boolean isValueType(Class<?> type) {
-        return type == PArray.class || type == PHash.class || type == ErrorValue.class;
+        return type == PArray.class || type == PHash.class || type == ErrorValue.class
+                || type == ArrayValue.class || type == HashValue.class;
     }
 
     private static PonderError mismatch(int position, String selector, String owner, String wanted, Object got) {

@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.DomainHandle;
 import net.smc.policy.api.Nil;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.api.Managed;
@@ -14,11 +15,17 @@ import java.util.Map;
  * its parents, which event delivery and authorisation follow.
  */
 @Managed("Domain")
-public class Domain extends ManagedObject {
+public class Domain extends ManagedObject implements DomainHandle {
     private final CellRuntime runtime;
     private final LinkedHashMap<String, Object> entries = new LinkedHashMap<>();
 
     public Domain(CellRuntime runtime) {
+        this.runtime = runtime;
+    }
+
+    /** A domain that also answers the operations of {@code type} (see {@link ManagedClass#withOperationsOf}). */
+    Domain(CellRuntime runtime, ManagedClass type) {
+        super(type);
         this.runtime = runtime;
     }
 

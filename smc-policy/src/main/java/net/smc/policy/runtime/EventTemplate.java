@@ -10,7 +10,7 @@ import java.util.List;
  * of exactly one template; raising an event delivers it synchronously.
  */
 @Managed("EventTemplate")
-public final class EventTemplate extends ManagedObject {
+public final class EventTemplate extends ManagedObject implements net.smc.policy.api.EventHandle {
     private final CellRuntime runtime;
     private final String[] names;
 

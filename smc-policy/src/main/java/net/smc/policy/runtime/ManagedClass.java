@@ -4,15 +4,13 @@ import net.smc.policy.api.Nil;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.api.Managed;
 import net.smc.policy.api.Op;
+import net.smc.policy.api.OpInterfaces;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.math.BigDecimal;
-import java.util.ArrayDeque;
 import java.util.Collections;
 import java.util.HashMap;
-import java.util.LinkedHashSet;
-import java.util.List;
 import java.util.Map;
 import java.util.TreeSet;
 import java.util.Set;
@@ -180,19 +178,20 @@ public final class ManagedClass {
     }
 
     /** Every interface a class implements, directly or through superclasses and superinterfaces, nearest first. */
-    public static Set<Class<?>> interfacesOf(Class<?> type) {
-        Set<Class<?>> found = new LinkedHashSet<>();
-        ArrayDeque<Class<?>> queue = new ArrayDeque<>();
-        for (Class<?> k = type; k != null; k = k.getSuperclass()) {
-            queue.addAll(List.of(k.getInterfaces()));
-        }
-        while (!queue.isEmpty()) {
-            Class<?> i = queue.removeFirst();
-            if (found.add(i)) {
-                queue.addAll(List.of(i.getInterfaces()));
-            }
-        }
-        return found;
+    static Set<Class<?>> interfacesOf(Class<?> type) {
+        return OpInterfaces.of(type);
+    }
+
+    /**
+     * The table of a {@code base} (a domain, say) that also answers the instance operations of the
+     * Java object {@code extension}, which win over the base's and run on the extension; named after
+     * the extension's class, as if that class extended the base.
+     */
+    static ManagedClass withOperationsOf(Class<?> base, Object extension) {
+        String name = displayName(extension.getClass());
+        Map<String, Operation> ops = operations(base, Operation.Kind.INSTANCE, name);
+        operations(extension.getClass(), Operation.Kind.INSTANCE, name).forEach((selector, op) -> ops.put(selector, op.boundTo(extension)));
+        return new ManagedClass(name, extension.getClass(), withCommon(ops), false);
     }
 
     private static void put(Map<String, Operation> ops, String selector, Operation op, Class<?> type) {

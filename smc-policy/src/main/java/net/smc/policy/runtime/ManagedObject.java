@@ -1,5 +1,6 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.Handle;
 import net.smc.policy.api.Op;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -7,13 +8,14 @@ import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * A managed object: something that sits in domains, has policies attached and answers the
  * operations of its {@link ManagedClass}. Built-in kinds (domains, policies, event templates)
  * extend this class; any other annotated Java object is wrapped in one.
  */
-public class ManagedObject {
+public class ManagedObject implements Handle {
     private final Object impl;
     private final ManagedClass type;
     private final List<Domain> parents = new ArrayList<>(1);
@@ -26,6 +28,12 @@ public class ManagedObject {
     protected ManagedObject() {
         this.impl = this;
         this.type = ManagedClass.of(getClass());
+    }
+
+    /** For subclasses: the object is its own implementation, with the operations of {@code type}. */
+    protected ManagedObject(ManagedClass type) {
+        this.impl = this;
+        this.type = type;
     }
 
     /** A handle for a Java object whose operations are given by {@code type}. */
@@ -43,12 +51,23 @@ public class ManagedObject {
     }
 
     /** The Java object whose methods implement the operations (this object for built-ins). */
+    @Override
     public Object impl() {
         return impl;
     }
 
     public ManagedClass type() {
         return type;
+    }
+
+    @Override
+    public String className() {
+        return type.name();
+    }
+
+    @Override
+    public Set<String> selectors() {
+        return type.selectors();
     }
 
     /** The domains this object sits in, in the order it was added to them. */
@@ -67,6 +86,7 @@ public class ManagedObject {
     }
 
     /** The first path from root to this object ({@code root/a/b}), or {@code null} if it is in no domain tree. */
+    @Override
     public String path() {
         StringBuilder path = new StringBuilder();
         ManagedObject at = this;

@@ -15,7 +15,7 @@ import net.smc.policy.lang.SourcePos;
  * {@code onError:} handler, and never reach the script that raised the event.
  */
 @Managed("ObligationPolicy")
-public final class ObligationPolicy extends ManagedObject {
+public final class ObligationPolicy extends ManagedObject implements net.smc.policy.api.PolicyHandle {
     private final CellRuntime runtime;
     private EventTemplate template;
     private final List<Block> conditions = new ArrayList<>();
@@ -47,6 +47,19 @@ public final class ObligationPolicy extends ManagedObject {
 
     long attachOrder() {
         return attachOrder;
+    }
+
+    @Override
+    public boolean isObligation() {
+        return true;
+    }
+
+    @Override
+    public void retire() {
+        active(false);
+        for (ManagedObject node : attachments()) {
+            detach(node);
+        }
     }
 
     public boolean isActive() {

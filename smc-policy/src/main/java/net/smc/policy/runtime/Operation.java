@@ -1,5 +1,7 @@
 package net.smc.policy.runtime;
 
+import net.smc.policy.api.OpContext;
+
 import net.smc.policy.api.PonderError;
 import java.lang.invoke.MethodHandle;
 import java.lang.invoke.MethodHandles;
@@ -63,7 +65,7 @@ final class Operation {
 
     static Operation of(String selector, Executable member, Kind kind, String owner) {
         Class<?>[] params = member.getParameterTypes();
-        boolean wantsContext = params.length > 0 && params[0] == CallContext.class;
+        boolean wantsContext = params.length > 0 && (params[0] == CallContext.class || params[0] == OpContext.class);
         int skip = (wantsContext ? 1 : 0) + (kind == Kind.STATIC_RECEIVER ? 1 : 0);
         int arity = params.length - skip;
         int expected = arityOf(selector);
@@ -162,6 +164,16 @@ final class Operation {
         } catch (PonderError e) {
             throw new PonderError("'" + selector + "' of " + owner + " failed: " + e.getMessage());
         }
+    }
+
+    /**
+     * This operation with its receiver fixed to {@code target}: whatever receiver it is invoked on,
+     * the Java method runs on {@code target} (a domain's extra operations, see
+     * {@link ManagedClass#withOperationsOf}).
+     */
+    Operation boundTo(Object target) {
+        MethodHandle bound = MethodHandles.dropArguments(MethodHandles.insertArguments(handle, 1, target), 1, Object.class);
+        return new Operation(selector, arity, kind, bound, converters, returnsVoid, wantsContext, owner);
     }
 
     /** Whether the operation wants the call's context (and so a {@link CallContext} must be made). */

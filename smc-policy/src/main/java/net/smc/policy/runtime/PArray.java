@@ -10,7 +10,7 @@ import java.util.List;
 
 /** A PonderTalk array: growable, 0-based, holding any values. */
 @Managed("Array")
-public final class PArray {
+public final class PArray implements net.smc.policy.api.ArrayValue {
     private final ArrayList<Object> items;
 
     public PArray() {

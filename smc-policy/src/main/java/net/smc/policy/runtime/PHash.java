@@ -12,7 +12,7 @@ import java.util.Set;
 
 /** A PonderTalk hash: string keys, any values, insertion order. */
 @Managed("Hash")
-public final class PHash {
+public final class PHash implements net.smc.policy.api.HashValue {
     private final LinkedHashMap<String, Object> map = new LinkedHashMap<>();
 
     public PHash() {

@@ -47,10 +47,10 @@ final class StringOps {
         return self.isEmpty();
     }
 
-    /** Parses the string as XML (a standard object of {@code net.smc.policy.stdlib}). */
+    /** Parses the string as XML (with the parser the engine was configured with: the standard objects' XML value). */
     @Op("asXML")
-    static Object asXML(String self) {
-        return net.smc.policy.stdlib.StandardObjects.parseXml(self);
+    static Object asXML(CallContext ctx, String self) {
+        return ctx.runtime().parseXml(self);
     }
 
     /** Resolves the string as a path: absolute when it starts with '/', else from root. */

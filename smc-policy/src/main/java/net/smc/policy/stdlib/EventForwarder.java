@@ -14,6 +14,8 @@ import net.smc.policy.runtime.ManagedObject;
 import net.smc.policy.api.Op;
 import net.smc.policy.runtime.PHash;
 import net.smc.policy.api.PonderError;
+import net.smc.policy.api.TeamAddress;
+import net.smc.policy.runtime.Domain;
 import net.smc.policy.runtime.CellRuntime;
 import net.smc.policy.runtime.CallContext;
 
@@ -26,6 +28,12 @@ import net.smc.policy.runtime.CallContext;
  * hash of its attributes. Created inactive. An error while forwarding is reported as
  * {@code EventForwarder: unhandled error: ...} and never reaches the raising statement; a
  * forwarding loop ends at the call depth limit.
+ *
+ * <p>A target may also be a domain or object of another cell of the team, written as the string
+ * {@code "/team/<cell>/<path>"} ({@link TeamAddress}, in place of Ponder2's RMI URLs): the event
+ * goes there over the cell's {@link net.smc.policy.api.TeamLink} by its template's name under
+ * {@code root/event} and its attributes, and that cell's authorisation policies decide. The answer
+ * comes back as {@code remoteResult}; a refusal is also reported here.
  */
 @Managed("EventForwarder")
 final class EventForwarder extends ManagedObject implements EventObserver {
@@ -51,8 +59,8 @@ final class EventForwarder extends ManagedObject implements EventObserver {
     }
 
     @Op("forwardTo:")
-    void forwardTo(ManagedObject target) {
-        targets.put(target, null);
+    void forwardTo(Object target) {
+        targets.put(checkedTarget(target), null);
     }
 
     @Op("forwardTo:as:")
@@ -60,12 +68,27 @@ final class EventForwarder extends ManagedObject implements EventObserver {
         if (selector.chars().filter(c -> c == ':').count() != 1 || !selector.endsWith(":")) {
             throw new PonderError("forwardTo:as: needs a one-argument keyword selector such as 'event:', got '" + selector + "'");
         }
-        targets.put(target, selector);
+        targets.put(TeamAddress.isTeamAddress(target) ? TeamAddress.parse((String) target) : target, selector);
     }
 
     @Op("remove:")
     void remove(Object target) {
-        targets.remove(target);
+        targets.remove(TeamAddress.isTeamAddress(target) ? TeamAddress.parse((String) target) : target);
+    }
+
+    private static Object checkedTarget(Object target) {
+        if (target instanceof ManagedObject) {
+            return target;
+        }
+        if (TeamAddress.isTeamAddress(target)) {
+            TeamAddress to = TeamAddress.parse((String) target);
+            if (to.path().isEmpty()) {
+                throw new PonderError("forwardTo: needs a domain of the other cell, as in " + to + "/event; got " + to);
+            }
+            return to;
+        }
+        throw new PonderError("forwardTo: needs a domain, or a domain of another cell as \"/team/<cell>/<path>\"; got "
+                + net.smc.policy.runtime.Values.print(target));
     }
 
     /** Forwards only events of this template (repeatable); without any, every event. */
@@ -95,7 +118,9 @@ final class EventForwarder extends ManagedObject implements EventObserver {
         }
         for (Map.Entry<Object, String> target : List.copyOf(targets.entrySet())) {
             try {
-                if (target.getValue() == null) {
+                if (target.getKey() instanceof TeamAddress to) {
+                    forwardToCell(to, target.getValue(), template, values);
+                } else if (target.getValue() == null) {
                     runtime.deliverAt(ex, (ManagedObject) target.getKey(), template, values);
                 } else {
                     PHash event = new PHash();
@@ -108,5 +133,26 @@ final class EventForwarder extends ManagedObject implements EventObserver {
                 runtime.report(new Diagnostic(e.pos(), "EventForwarder: unhandled error: " + e.getMessage()));
             }
         }
+    }
+
+    private void forwardToCell(TeamAddress to, String selector, EventTemplate template, Object[] values) {
+        String name = templateName(template);
+        Map<String, Object> attributes = new LinkedHashMap<>();
+        for (int i = 0; i < values.length; i++) {
+            attributes.put(template.attributeNames().get(i), values[i]);
+        }
+        runtime.teamLink().forwardEvent(to, selector, name, attributes);
+    }
+
+    /** The template's name under root/event, the name other cells know it by. */
+    private String templateName(EventTemplate template) {
+        if (runtime.root().get("event") instanceof Domain events) {
+            for (Map.Entry<String, Object> e : events.entries().entrySet()) {
+                if (e.getValue() == template) {
+                    return e.getKey();
+                }
+            }
+        }
+        throw new PonderError("the event is not stored under root/event, so another cell cannot know it by name");
     }
 }

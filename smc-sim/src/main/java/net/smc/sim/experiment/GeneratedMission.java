@@ -8,7 +8,7 @@ import java.util.Map;
 import java.util.Set;
 
 import net.smc.core.cell.Scheme;
-import net.smc.core.cell.sim.SimVehicle;
+import net.smc.sim.team.SimVehicle;
 
 /**
  * A mission written by {@link MissionGenerator}: its files, its roles and a team of vehicles that

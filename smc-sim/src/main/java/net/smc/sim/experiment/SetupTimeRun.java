@@ -7,7 +7,7 @@ import java.util.function.Consumer;
 
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
-import net.smc.core.cell.sim.TeamSimulation;
+import net.smc.sim.team.TeamSimulation;
 import net.smc.core.mission.Mission;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.InMemoryNetwork;

@@ -14,9 +14,6 @@ import java.util.random.RandomGeneratorFactory;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.RadioModel;
 import net.smc.sim.hardware.Radio;
-import net.smc.sim.robot.SimRobot;
-import net.smc.sim.world.Arena;
-import net.smc.sim.world.SimWorld;
 
 /**
  * The radio between the world's robots and fixed stations, from their positions: range, walls in
@@ -32,7 +29,7 @@ import net.smc.sim.world.SimWorld;
  * }</pre>
  */
 public final class WorldRadio implements RadioModel {
-    private final SimWorld world;
+    private final RadioGround world;
     private final RadioSettings settings;
     private final RandomGenerator random;
     private final Map<Address, String> nodes = new HashMap<>();
@@ -41,19 +38,18 @@ public final class WorldRadio implements RadioModel {
     // capacity x capacity table, valid where computedIn holds the current generation.
     private final Map<String, Integer> numbers = new HashMap<>();
     private final List<String> ids = new ArrayList<>();
-    private SimRobot[] robots = new SimRobot[0];
-    private Arena.Station[] station = new Arena.Station[0];
+    private RadioGround.Node[] located = new RadioGround.Node[0];
     private int capacity;
     private double[] cache = new double[0];
     private long[] computedIn = new long[0];
     private long cachedStep = -1;
     private long generation;
     private int[] sorted;
-    private int sortedRobots;
+    private int sortedNodes;
 
-    /** Made by the world; {@code seed} seeds the loss draws. */
-    public WorldRadio(SimWorld world, RadioSettings settings, long seed) {
-        this.world = Objects.requireNonNull(world, "world");
+    /** Made by the world, which tells it of positions and walls; {@code seed} seeds the loss draws. */
+    public WorldRadio(RadioGround ground, RadioSettings settings, long seed) {
+        this.world = Objects.requireNonNull(ground, "ground");
         this.settings = Objects.requireNonNull(settings, "settings");
         this.random = RandomGeneratorFactory.of("L64X128MixRandom").create(seed ^ 0x7AD10L);
     }
@@ -189,48 +185,43 @@ public final class WorldRadio implements RadioModel {
 
     /** Every robot and station by id, robots added since the last call included. */
     private int[] sortedNodes() {
-        List<SimRobot> all = world.robots();
-        if (sorted == null || sortedRobots != all.size()) {
+        int count = world.nodeCount();
+        if (sorted == null || sortedNodes != count) {
             TreeMap<String, Integer> byId = new TreeMap<>();
-            for (SimRobot robot : all) {
-                byId.put(robot.id(), number(robot.id()));
-            }
-            for (Arena.Station station : world.arena().stations()) {
-                byId.putIfAbsent(station.id(), number(station.id()));
+            for (String id : world.nodeIds()) {
+                byId.putIfAbsent(id, number(id));
             }
             sorted = byId.values().stream().mapToInt(Integer::intValue).toArray();
-            sortedRobots = all.size();
+            sortedNodes = count;
         }
         return sorted;
     }
 
     private boolean on(int node) {
-        SimRobot robot = robot(node);
-        return robot == null || robot.radioOn();
+        RadioGround.Node at = node(node);
+        return at == null || at.radioOn();
     }
 
-    /** The robot numbered {@code node}, or null for a station or an unknown id. */
-    private SimRobot robot(int node) {
-        SimRobot robot = robots[node];
-        if (robot == null && station[node] == null) {
-            robot = world.robot(ids.get(node));   // an id first seen before its robot was added
-            robots[node] = robot;
+    /** The robot or station numbered {@code node}, or null for an unknown id. */
+    private RadioGround.Node node(int node) {
+        RadioGround.Node at = located[node];
+        if (at == null) {
+            at = world.node(ids.get(node));   // an id first seen before its robot was added
+            located[node] = at;
         }
-        return robot;
+        return at;
     }
 
     private boolean located(int node) {
-        return robot(node) != null || station[node] != null;
+        return node(node) != null;
     }
 
     private double x(int node) {
-        SimRobot robot = robots[node];
-        return robot != null ? robot.x() : station[node].x();
+        return located[node].x();
     }
 
     private double y(int node) {
-        SimRobot robot = robots[node];
-        return robot != null ? robot.y() : station[node].y();
+        return located[node].y();
     }
 
     private int number(String id) {
@@ -244,20 +235,14 @@ public final class WorldRadio implements RadioModel {
         }
         numbers.put(id, n);
         ids.add(id);
-        robots[n] = world.robot(id);
-        for (Arena.Station s : world.arena().stations()) {
-            if (robots[n] == null && s.id().equals(id)) {
-                station[n] = s;
-            }
-        }
+        located[n] = world.node(id);
         return n;
     }
 
     private void grow() {
         int old = capacity;
         capacity = Math.max(16, 2 * old);
-        robots = Arrays.copyOf(robots, capacity);
-        station = Arrays.copyOf(station, capacity);
+        located = Arrays.copyOf(located, capacity);
         double[] oldCache = cache;
         long[] oldComputed = computedIn;
         cache = new double[capacity * capacity];

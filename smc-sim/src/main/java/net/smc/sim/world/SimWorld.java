@@ -9,6 +9,7 @@ import java.util.TreeMap;
 
 import net.smc.core.transport.Cancellable;
 import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.radio.RadioGround;
 import net.smc.sim.radio.RadioSettings;
 import net.smc.sim.radio.WorldRadio;
 import net.smc.sim.robot.KoalaSpec;
@@ -80,7 +81,7 @@ public final class SimWorld {
         physics.getSettings().setContinuousDetectionMode(ContinuousDetectionMode.NONE);
         ArenaBodies.build(arena, physics);
         shapes = new StaticShapes(arena);
-        radio = new WorldRadio(this, b.radio, b.seed);
+        radio = new WorldRadio(new Ground(), b.radio, b.seed);
     }
 
     /** A builder for a world of {@code arena} stepped by {@code scheduler}. */
@@ -273,6 +274,79 @@ public final class SimWorld {
      */
     public int wallsBetween(double ax, double ay, double bx, double by, int limit) {
         return shapes.wallsCrossed(ax, ay, bx, by, limit);
+    }
+
+    /** The world as its radio sees it: robots (in the order added) and stations, their positions, the walls. */
+    private final class Ground implements RadioGround {
+        private final Map<String, Node> stations = new TreeMap<>();
+
+        Ground() {
+            for (Arena.Station s : arena.stations()) {
+                stations.put(s.id(), new Node() {
+                    @Override
+                    public double x() {
+                        return s.x();
+                    }
+
+                    @Override
+                    public double y() {
+                        return s.y();
+                    }
+
+                    @Override
+                    public boolean radioOn() {
+                        return true;
+                    }
+                });
+            }
+        }
+
+        @Override
+        public long steps() {
+            return steps;
+        }
+
+        @Override
+        public int nodeCount() {
+            return order.size() + arena.stations().size();
+        }
+
+        @Override
+        public Iterable<String> nodeIds() {
+            List<String> ids = new ArrayList<>(nodeCount());
+            order.forEach(r -> ids.add(r.id()));
+            arena.stations().forEach(s -> ids.add(s.id()));
+            return ids;
+        }
+
+        @Override
+        public Node node(String id) {
+            SimRobot robot = robots.get(id);
+            if (robot == null) {
+                return stations.get(id);
+            }
+            return new Node() {
+                @Override
+                public double x() {
+                    return robot.x();
+                }
+
+                @Override
+                public double y() {
+                    return robot.y();
+                }
+
+                @Override
+                public boolean radioOn() {
+                    return robot.radioOn();
+                }
+            };
+        }
+
+        @Override
+        public int wallsBetween(double ax, double ay, double bx, double by, int limit) {
+            return shapes.wallsCrossed(ax, ay, bx, by, limit);
+        }
     }
 
     /** Lets a ray hit every enabled, non-sensor body but {@code self}. */

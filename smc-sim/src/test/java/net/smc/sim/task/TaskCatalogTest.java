@@ -84,7 +84,7 @@ class TaskCatalogTest {
             assertEquals(catalog.type(name), task.getClass());
             assertEquals(catalog.describe(name), task.describe());
             log.watch(task);
-            assertTrue(log.cell.root().get("task") instanceof net.smc.policy.runtime.Domain d && d.get(name) != null,
+            assertTrue(log.cell.root().get("task") instanceof net.smc.policy.api.DomainHandle d && d.get(name) != null,
                     name + " at root/task");
         }
         log.assertNoErrors();

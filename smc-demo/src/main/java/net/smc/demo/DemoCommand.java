@@ -1,0 +1,137 @@
+package net.smc.demo;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+import javax.imageio.ImageIO;
+
+import net.smc.sim.render.GifRecorder;
+import net.smc.sim.render.NoDisplayException;
+import net.smc.sim.render.PacedLoop;
+import net.smc.sim.render.ViewControls;
+import net.smc.sim.render.WorldPainter;
+import net.smc.sim.render.WorldWindow;
+import net.smc.sim.scenario.RescueScenario;
+import net.smc.sim.team.TeamSimulation;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code smc demo [rescue] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P] [--limit S]}: runs the
+ * paper's rescue (section IV-C) with cells and policies in the simulated world, prints its
+ * timeline as it happens, and writes {@code rescue.png} (in the spirit of Fig. 7),
+ * {@code rescue.gif} and {@code rescue-timeline.csv} into DIR. Exit 0 when assistance reached the
+ * soldier, 1 (with the reason) when not, 2 for a usage error.
+ */
+@Command(name = "demo", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
+        description = "Run a scenario of the paper in the simulated world: its timeline, a picture, a film, a CSV.")
+final class DemoCommand implements Callable<Integer> {
+    private final Io io;
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", arity = "0..1", defaultValue = "rescue", paramLabel = "SCENARIO",
+            description = "rescue (default); reconnaissance is not available yet")
+    String scenario;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed of every random draw (default 1)")
+    long seed;
+
+    @Option(names = "--out", defaultValue = "build/demo", paramLabel = "DIR", description = "where the files go (default build/demo)")
+    Path out;
+
+    @Option(names = "--gui", description = "show the world in a window while it runs (headless without a display)")
+    boolean gui;
+
+    @Option(names = "--speed", defaultValue = "1", paramLabel = "X", description = "with --gui: mission seconds per wall second (default 1)")
+    double speed;
+
+    @Option(names = "--loss", defaultValue = "0", paramLabel = "P", description = "extra datagram loss, 0 to below 1 (default 0)")
+    double loss;
+
+    @Option(names = "--limit", defaultValue = "180", paramLabel = "SECONDS", description = "mission time after which the run gives up (default 180)")
+    double limit;
+
+    @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp", description = "sim (default); udp is not available yet")
+    String transport;
+
+    DemoCommand(Io io) {
+        this.io = io;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (!scenario.equals("rescue")) {
+            throw new ParameterException(spec.commandLine(), scenario.equals("reconnaissance")
+                    ? "scenario 'reconnaissance' is not available yet; run 'rescue'"
+                    : "unknown scenario '" + scenario + "'; scenarios: rescue, reconnaissance");
+        }
+        if (!transport.equals("sim")) {
+            throw new ParameterException(spec.commandLine(), transport.equals("udp")
+                    ? "--transport udp is not available yet for the demo; use sim"
+                    : "--transport '" + transport + "' is unknown; use sim or udp");
+        }
+        if (!(loss >= 0 && loss < 1)) {
+            throw new ParameterException(spec.commandLine(), "--loss " + loss + " is out of range; it must be 0 or more and below 1");
+        }
+        if (!(speed > 0) || Double.isInfinite(speed)) {
+            throw new ParameterException(spec.commandLine(), "--speed " + speed + " must be a positive number");
+        }
+        if (!(limit > 0) || limit > 86_400) {
+            throw new ParameterException(spec.commandLine(), "--limit " + limit + " must be above 0 and at most 86400 seconds");
+        }
+        Path dir = io.workingDir().resolve(out);
+        Files.createDirectories(dir);
+        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss).withLimit(Math.round(limit * 1000))
+                .withSecurity(TeamSimulation.Security.REAL).withFilm(GifRecorder.Settings.defaults());
+        io.stdout().println("rescue of a wounded soldier (section IV-C), seed " + seed + ", loss " + loss
+                + ", signed traffic over the world's radio");
+        RescueScenario rescue;
+        try {
+            rescue = RescueScenario.load(io.workingDir(), settings, row -> io.stdout().println(RescueScenario.format(row)));
+        } catch (IOException e) {
+            io.stderr().println("smc demo: " + e.getMessage());
+            return 1;
+        }
+        long wall = System.nanoTime();
+        rescue.start();
+        if (gui) {
+            runWithWindow(rescue);
+        }
+        rescue.advance(Long.MAX_VALUE);
+        RescueScenario.Outcome outcome = rescue.finish();
+        double wallSeconds = (System.nanoTime() - wall) / 1e9;
+        BufferedImage png = new WorldPainter().render(rescue.world(), rescue.scene(), 1200, 860);
+        ImageIO.write(png, "png", dir.resolve("rescue.png").toFile());
+        rescue.film().orElseThrow().write(dir.resolve("rescue.gif"));
+        rescue.timeline().writeCsv(dir.resolve("rescue-timeline.csv"));
+        io.stdout().println(String.format(Locale.ROOT, "%.1f s of mission time in %.1f s (%.1fx real time); files in %s",
+                outcome.missionMillis() / 1000.0, wallSeconds, outcome.missionMillis() / 1000.0 / wallSeconds, dir));
+        rescue.diagnostics().forEach((vehicle, errors) -> errors.forEach(e -> io.stderr().println(vehicle + ": " + e)));
+        if (outcome.succeeded()) {
+            io.stdout().println("succeeded: " + outcome.reason());
+            return 0;
+        }
+        io.stdout().println("failed: " + outcome.reason());
+        return 1;
+    }
+
+    private void runWithWindow(RescueScenario rescue) throws InterruptedException {
+        ViewControls controls = new ViewControls(speed, net.smc.sim.render.Overlays.defaults());
+        try (WorldWindow window = WorldWindow.open("smc demo rescue", 1200, 860, controls)) {
+            PacedLoop.realTime(window.controls(), 40).run(rescue::advance, () -> window.show(rescue.world(), rescue.scene()),
+                    () -> window.closed() || rescue.finished());
+        } catch (NoDisplayException e) {
+            io.stdout().println(e.getMessage());
+        }
+    }
+}

@@ -1,0 +1,65 @@
+package net.smc.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** {@code smc demo}: the rescue's timeline, files and exit status, and its argument errors. */
+class DemoCommandTest {
+    private static final Path PROJECT = Path.of(System.getProperty("smc.project.dir", ".."));
+
+    @Test
+    void rescue_succeeds_printsTheSevenSteps_andWritesItsFiles(@TempDir Path out) throws Exception {
+        // --gui in a headless test JVM: it says there is no display and runs headless.
+        Smc.Result r = Smc.in(PROJECT).run("demo", "rescue", "--seed", "3", "--out", out.toString(), "--gui");
+        assertEquals(0, r.status(), r.out() + r.err());
+        for (String step : List.of("(i)", "(ii)", "(iii)", "(iv)", "(v)", "(vi)", "(vii)")) {
+            assertTrue(r.out().contains(" " + step + " "), "step " + step + " on the timeline:\n" + r.out());
+        }
+        assertTrue(r.out().contains("display"), "says it runs headless:\n" + r.out());
+        assertTrue(r.out().contains("succeeded: "), r.out());
+        BufferedImage png = ImageIO.read(out.resolve("rescue.png").toFile());
+        assertEquals(1200, png.getWidth());
+        assertTrue(Files.size(out.resolve("rescue.gif")) > 10_000, "a film of some frames");
+        List<String> csv = Files.readAllLines(out.resolve("rescue-timeline.csv"));
+        assertEquals("time_ms,vehicle,what,detail,step", csv.get(0));
+        assertTrue(csv.stream().anyMatch(l -> l.endsWith(",vii")), "the CSV has step (vii)");
+    }
+
+    @Test
+    void rescue_thatRunsOutOfTime_exitsOne_withTheReason(@TempDir Path out) {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "--limit", "5", "--out", out.toString());
+        assertEquals(1, r.status(), r.out() + r.err());
+        assertTrue(r.out().contains("failed: no assistance delivered within 5.0 s"), r.out());
+        assertTrue(Files.exists(out.resolve("rescue.png")), "the picture of a failed run is written too");
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "reconnaissance|scenario 'reconnaissance' is not available yet",
+        "burglary|unknown scenario 'burglary'",
+        "--loss=1.5|--loss 1.5 is out of range",
+        "--speed=0|--speed 0.0 must be a positive number",
+        "--transport=udp|--transport udp is not available yet",
+        "--transport=carrier-pigeon|--transport 'carrier-pigeon' is unknown",
+        "--limit=-1|--limit -1.0 must be above 0",
+        "--seed=many|many",
+    })
+    void badArguments_exitTwo_withTheRule(String argument, String message, @TempDir Path out) {
+        Smc.Result r = Smc.in(PROJECT).run("demo", argument, "--out", out.toString());
+        assertEquals(2, r.status(), r.out() + r.err());
+        assertTrue(r.err().contains(message), "expected '" + message + "' in:\n" + r.err());
+        assertTrue(!Files.exists(out.resolve("rescue.png")), "nothing is run");
+    }
+}

@@ -1,0 +1,357 @@
+package net.smc.sim.team;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.cell.Cell;
+import net.smc.core.cell.Seat;
+import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionRole;
+import net.smc.core.team.TeamConfiguration;
+import net.smc.core.team.TeamPlanner;
+import net.smc.core.transport.sim.LinkProfile;
+
+/**
+ * What must hold of a simulated team after every step, and what it must reach once faults stop.
+ *
+ * <p>Safety, after every step:
+ * <ol>
+ *   <li>the parent relation among live cells has no cycle (each cell has at most one parent by
+ *       construction);</li>
+ *   <li>in each team (the cells attached to one acting commander: each holds a live lease from a
+ *       parent that lists it as a child, all the way up) no seat has two holders, so no role has
+ *       more holders than its reasonably-optimal cardinality;</li>
+ *   <li>a cell whose parent is gone or no longer lists it loses its lease within the lease time
+ *       plus two heartbeats;</li>
+ *   <li>every attached holder is authenticated (not the rogue) and capable (its vehicle meets the
+ *       role's requirement);</li>
+ *   <li>two acting commanders that can hear each other do not stay so for longer than the merge
+ *       bound; a single connected part has at most one commander beyond it;</li>
+ *   <li>a rogue vehicle holds nothing, and no honest cell names it as parent, child or commander.</li>
+ * </ol>
+ *
+ * <p>Liveness ({@link #settled()}): one acting commander among live cells; in its team every role
+ * has the number of holders the {@link TeamPlanner} gives for the live honest vehicles, capped by
+ * the seats the tree can manage (a detector's seat needs its surveyor's seat held: with one surveyor
+ * left of two, one detector seat has no manager); and the configuration is maximal: no free vehicle
+ * could take a vacant seat, or a secondary seat carried beside another role. (The planner may reach
+ * "a vehicle of its own for every role" by trading vehicles between subtrees, which managers that
+ * see only their own subtree cannot; {@link #matchesPlan()} tells whether a run got there too.)
+ */
+public final class TeamInvariants {
+    private final TeamSimulation sim;
+    private final long mergeBoundMillis;
+    private final Map<String, Long> metSince = new HashMap<>();
+    private final Map<String, Long> danglingSince = new HashMap<>();
+    private long checks;
+
+    TeamInvariants(TeamSimulation sim, long mergeBoundMillis) {
+        this.sim = sim;
+        this.mergeBoundMillis = mergeBoundMillis;
+    }
+
+    /** The merge bound in use: given, or ten beacon periods (tolerates heavy loss) plus a failure timeout. */
+    public long mergeBoundMillis() {
+        if (mergeBoundMillis >= 0) {
+            return mergeBoundMillis;
+        }
+        long com = number("comTimeout");
+        return 10L * net.smc.core.cell.Timing.BEACON_TICKS * com + number("failureTimeout");
+    }
+
+    private long number(String name) {
+        return sim.mission().parameter(name).map(p -> ((Number) p.value()).longValue()).orElse(1000L);
+    }
+
+    public long checks() {
+        return checks;
+    }
+
+    /** @throws InvariantViolation naming the rule, the cells involved, the seed and the trace */
+    void check() {
+        checks++;
+        List<Cell> cells = sim.cells();
+        Map<String, Cell> byId = new HashMap<>();
+        cells.forEach(c -> byId.put(c.vehicle(), c));
+        for (Cell c : cells) {
+            Set<String> seen = new HashSet<>();
+            Cell at = c;
+            while (at != null && at.parent().isPresent()) {
+                if (!seen.add(at.vehicle())) {
+                    fail("the parent relation has a cycle through " + seen);
+                }
+                at = byId.get(at.parent().get());
+            }
+        }
+        Map<String, List<Cell>> teams = teams(cells, byId);
+        Mission mission = sim.mission();
+        for (Map.Entry<String, List<Cell>> team : teams.entrySet()) {
+            Map<Seat, String> holders = new HashMap<>();
+            for (Cell c : team.getValue()) {
+                SimVehicle v = sim.vehicle(c.vehicle());
+                for (Seat s : c.seats()) {
+                    String other = holders.put(s, c.vehicle());
+                    if (other != null) {
+                        fail("seat " + s + " has two holders in the team of " + team.getKey() + ": " + other + " and "
+                                + c.vehicle());
+                    }
+                    if (s.slot() >= optimal(mission, s.role())) {
+                        fail(c.vehicle() + " holds " + s + " beyond the optimal cardinality of " + s.role());
+                    }
+                    MissionRole role = mission.role(s.role()).orElseThrow();
+                    if (!role.requirement().isMetBy(v.description())) {
+                        fail(c.vehicle() + " holds " + s + " but lacks " + role.requirement().missingFrom(v.description())
+                                .describe());
+                    }
+                }
+            }
+        }
+        checkDangling(cells, byId);
+        checkRogues(cells);
+        checkCommanders();
+    }
+
+    private static int optimal(Mission mission, String role) {
+        return role.equals(Mission.COMMANDER) ? 1 : mission.role(role).orElseThrow().optimal();
+    }
+
+    /** Attached cells by the acting commander they hang from. */
+    static Map<String, List<Cell>> teams(List<Cell> cells, Map<String, Cell> byId) {
+        Map<String, List<Cell>> teams = new TreeMap<>();
+        for (Cell c : cells) {
+            root(c, byId).ifPresent(r -> teams.computeIfAbsent(r, k -> new ArrayList<>()).add(c));
+        }
+        return teams;
+    }
+
+    /**
+     * The acting commander a cell is attached to, if it is attached: every cell on the way up holds
+     * a live lease (not suspended) from a parent that lists it as a child.
+     */
+    private static Optional<String> root(Cell c, Map<String, Cell> byId) {
+        Cell at = c;
+        for (int depth = 0; depth < 64 && at != null; depth++) {
+            if (at.isActingCommander()) {
+                return Optional.of(at.vehicle());
+            }
+            if (at.isSuspended() || at.parent().isEmpty()) {
+                return Optional.empty();
+            }
+            Cell parent = byId.get(at.parent().get());
+            if (parent == null || !parent.children().containsKey(at.vehicle())) {
+                return Optional.empty();
+            }
+            at = parent;
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * A cell whose parent is gone or no longer lists it (a dropped Leave, a crash) keeps a lease it
+     * should not: it must lose it within the lease plus two heartbeats.
+     */
+    private void checkDangling(List<Cell> cells, Map<String, Cell> byId) {
+        long now = sim.nowMillis();
+        long bound = net.smc.core.cell.Timing.of(sim.mission()).leaseMillis() + 2 * number("comTimeout");
+        Set<String> dangling = new HashSet<>();
+        for (Cell c : cells) {
+            if (c.isActingCommander() || c.isSuspended() || c.parent().isEmpty()) {
+                continue;
+            }
+            Cell parent = byId.get(c.parent().get());
+            if (parent != null && parent.children().containsKey(c.vehicle())) {
+                continue;
+            }
+            String key = c.vehicle() + "->" + c.parent().get();
+            dangling.add(key);
+            long since = danglingSince.computeIfAbsent(key, k -> now);
+            if (now - since > bound) {
+                fail(c.vehicle() + " has held a lease from " + c.parent().get() + " for " + (now - since)
+                        + " ms although that parent is gone or does not list it; the bound is " + bound + " ms");
+            }
+        }
+        danglingSince.keySet().retainAll(dangling);
+    }
+
+    private void checkRogues(List<Cell> honest) {
+        for (SimVehicle v : sim.vehicles()) {
+            if (!v.rogue()) {
+                continue;
+            }
+            Cell rogue = sim.cell(v.id());
+            if (rogue != null && !v.commander() && !rogue.seats().isEmpty()) {
+                fail("rogue " + v.id() + " holds " + rogue.seats());
+            }
+            for (Cell c : honest) {
+                if (c.parent().filter(v.id()::equals).isPresent() || c.children().containsKey(v.id())
+                        || c.commander().filter(v.id()::equals).isPresent()) {
+                    fail("honest " + c.vehicle() + " names rogue " + v.id() + " as parent, child or commander");
+                }
+            }
+        }
+    }
+
+    private void checkCommanders() {
+        List<Cell> commanders = sim.commanders();
+        Set<String> pairs = new HashSet<>();
+        long now = sim.nowMillis();
+        for (int i = 0; i < commanders.size(); i++) {
+            for (int j = i + 1; j < commanders.size(); j++) {
+                String a = commanders.get(i).vehicle();
+                String b = commanders.get(j).vehicle();
+                if (!sameParts(a, b)) {
+                    continue;
+                }
+                String key = a + "|" + b;
+                pairs.add(key);
+                long since = metSince.computeIfAbsent(key, k -> now);
+                if (now - since > mergeBoundMillis()) {
+                    fail("acting commanders " + a + " and " + b + " have heard each other for " + (now - since)
+                            + " ms, beyond the merge bound of " + mergeBoundMillis() + " ms");
+                }
+            }
+        }
+        metSince.keySet().retainAll(pairs);
+    }
+
+    private boolean sameParts(String a, String b) {
+        return sim.parts().stream().anyMatch(p -> p.contains(a) && p.contains(b));
+    }
+
+    /**
+     * Whether the team has settled on the best configuration its live vehicles allow: one acting
+     * commander, every live honest vehicle attached to it or spare, and per role as many holders as
+     * the planner gives.
+     */
+    public boolean settled() {
+        return unsettled().isEmpty();
+    }
+
+    /**
+     * Settled, or dissolved: no acting commander is left (the commander and every backup that
+     * could have taken over are gone) and every live honest vehicle is free again.
+     */
+    public boolean settledOrDissolved() {
+        if (!sim.commanders().isEmpty()) {
+            return settled();
+        }
+        return sim.cells().stream().allMatch(c -> c.seats().isEmpty() && c.parent().isEmpty());
+    }
+
+    /** Why the team has not settled (empty when it has). */
+    public String unsettled() {
+        List<Cell> commanders = sim.commanders();
+        if (commanders.size() != 1) {
+            return "acting commanders: " + commanders.stream().map(Cell::vehicle).toList();
+        }
+        Cell cdr = commanders.get(0);
+        List<Cell> cells = sim.cells();
+        Map<String, Cell> byId = new HashMap<>();
+        cells.forEach(c -> byId.put(c.vehicle(), c));
+        List<Cell> team = teams(cells, byId).getOrDefault(cdr.vehicle(), List.of());
+        Map<String, Integer> have = new LinkedHashMap<>();
+        sim.mission().roleNames().forEach(r -> have.put(r, 0));
+        team.forEach(c -> c.seats().forEach(s -> have.merge(s.role(), 1, Integer::sum)));
+        TeamConfiguration plan = plan(cdr.vehicle());
+        Map<String, Integer> want = new LinkedHashMap<>();
+        sim.mission().roleNames().forEach(r -> want.put(r, plan.holdersOf(r).size()));
+        Set<Seat> held = new HashSet<>();
+        team.forEach(c -> held.addAll(c.seats()));
+        for (Map.Entry<String, Integer> e : want.entrySet()) {
+            e.setValue(Math.min(e.getValue(), capacity(cdr, e.getKey(), held)));
+        }
+        if (!have.equals(want)) {
+            return "holders " + have + ", the live vehicles allow " + want;
+        }
+        // Maximal: no free vehicle is left idle that could take a vacant seat the tree can manage,
+        // or a secondary seat that a vehicle of another role carries beside its own.
+        Map<Seat, String> holder = new HashMap<>();
+        team.forEach(c -> c.seats().forEach(st -> holder.put(st, c.vehicle())));
+        for (Cell free : cells) {
+            if (!free.seats().isEmpty() || free.hasLeft() || free.isActingCommander()) {
+                continue;
+            }
+            SimVehicle v = sim.vehicle(free.vehicle());
+            for (Seat st : cdr.slots().all()) {
+                if (st.role().equals(Mission.COMMANDER)) {
+                    continue;
+                }
+                Optional<Seat> owner = cdr.slots().owner(st);
+                boolean manageable = owner.isEmpty() || held.contains(owner.get());
+                String h = holder.get(st);
+                boolean open = h == null ? manageable
+                        : byId.get(h).seats().size() > 1 && mission().role(st.role()).orElseThrow().isSecondary();
+                if (open && mission().role(st.role()).orElseThrow().requirement().isMetBy(v.description())) {
+                    return free.vehicle() + " is free and could take " + st
+                            + (h == null ? ", which is vacant" : ", which " + h + " carries beside its own role");
+                }
+            }
+        }
+        return "";
+    }
+
+    /**
+     * Whether the team is exactly as the planner would have it: settled, and when the planner gives
+     * every role a vehicle of its own, so does the team.
+     */
+    public boolean matchesPlan() {
+        if (!settled()) {
+            return false;
+        }
+        Cell cdr = sim.commanders().get(0);
+        if (!plan(cdr.vehicle()).optimalReached()) {
+            return true;
+        }
+        Map<String, Cell> byId = new HashMap<>();
+        sim.cells().forEach(c -> byId.put(c.vehicle(), c));
+        return teams(sim.cells(), byId).getOrDefault(cdr.vehicle(), List.of()).stream()
+                .allMatch(c -> c.seats().size() == 1);
+    }
+
+    private Mission mission() {
+        return sim.mission();
+    }
+
+    /** Seats of {@code role} whose owning seat is held: the most holders the tree can manage now. */
+    private static int capacity(Cell cdr, String role, Set<Seat> held) {
+        int n = 0;
+        for (int slot = 0; slot < cdr.slots().optimal(role); slot++) {
+            Optional<Seat> owner = cdr.slots().owner(new Seat(role, slot));
+            if (owner.isEmpty() || held.contains(owner.get())) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** The planner's configuration for the live honest vehicles under {@code commander}. */
+    public TeamConfiguration plan(String commander) {
+        List<CapabilitySummary> live = new ArrayList<>();
+        for (Cell c : sim.cells()) {
+            if (!c.hasLeft()) {
+                live.add(sim.vehicle(c.vehicle()).description().summary());
+            }
+        }
+        return TeamPlanner.plan(sim.mission(), live, commander);
+    }
+
+    /** A loss profile within which the protocols' timing assumption (one-way latency below comTimeout) holds. */
+    public static LinkProfile lossy(double loss) {
+        return new LinkProfile(5, 20, loss, 0.05, 0.05, 30);
+    }
+
+    private void fail(String what) {
+        List<String> lines = new ArrayList<>(sim.trace());
+        lines.add("--- views at the violation");
+        sim.cells().forEach(c -> lines.add(c.view().toJson()));
+        throw new InvariantViolation(what, sim.seed(), sim.nowMillis(), lines);
+    }
+}
