@@ -58,6 +58,9 @@ final class Assignee {
         if ((!st.free() || st.left) && !promotable) {
             return; // Algorithm 1, line 9: a vehicle with a parent ignores discovery (unless it could move up)
         }
+        if (!promotable && !couldHoldAny(d.role())) {
+            return; // the manager could give it no seat: its role manages no role this vehicle is able to hold
+        }
         ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
     }
 
@@ -207,6 +210,22 @@ final class Assignee {
             ctx.host().importTaskStates(a.role(), a.handover());
             ctx.host().raise("handover", "handover", a.role(), a.handover());
         }
+    }
+
+    /**
+     * Whether this vehicle is able to hold one of the roles a manager of {@code managerRole} manages:
+     * the cheap check before answering its discovery. A manager gives only seats it owns, all of
+     * roles it manages, and only to a vehicle whose full description meets the seat's role
+     * requirement (Algorithm 2), so a vehicle that meets none of them could never be given a seat by
+     * it; its answer would only cost the manager a first contact to verify and a {@code newUAV} to
+     * decide. Every cell knows the mission, so this needs nothing on the wire.
+     */
+    private boolean couldHoldAny(String managerRole) {
+        if (ctx.slots().mission().role(managerRole).isEmpty() && !managerRole.equals(Mission.COMMANDER)) {
+            return false;
+        }
+        return ctx.slots().managedRoles(managerRole).stream()
+                .anyMatch(r -> ctx.slots().role(r).requirement().isMetBy(ctx.description()));
     }
 
     /**
