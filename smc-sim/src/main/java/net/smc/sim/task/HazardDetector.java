@@ -40,8 +40,8 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
     }
 
     @Override
-    public void hazardDetected(String kind, double x, double y) {
-        raise("hazardDetected", kind, x, y);
+    public void hazardDetected(String name, String uav, String kind, double x, double y) {
+        raise("hazardDetected", name, uav, kind, x, y);
     }
 
     @Override
@@ -53,7 +53,7 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         for (ChemicalSensor.Reading r : hardware.chemical().sense()) {
             if (r.strength() >= threshold && !found.containsKey(r.tag())) {
                 found.put(r.tag(), List.of(r.tag(), r.kind(), pose.x(), pose.y()));
-                hazardDetected(r.kind(), pose.x(), pose.y());
+                hazardDetected("hazardDetected", hardware.id(), r.kind(), pose.x(), pose.y());
             }
         }
     }

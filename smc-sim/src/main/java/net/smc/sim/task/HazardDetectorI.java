@@ -18,7 +18,12 @@ public interface HazardDetectorI {
     @Op("hazards")
     List<List<Object>> hazards();
 
-    /** A hazard was sensed at or above the threshold; {@code (x, y)} is where the robot stood. */
+    /**
+     * A hazard was sensed at or above the threshold; {@code (x, y)} is where the robot stood. The
+     * attributes are those of the architecture's {@code hazardDetected} template
+     * (policies/boot/events.p2): {@code name} is the event's name, {@code uav} the detecting robot.
+     */
     @TaskEvent
-    void hazardDetected(@Attr("kind") String kind, @Attr("x") double x, @Attr("y") double y);
+    void hazardDetected(@Attr("name") String name, @Attr("uav") String uav, @Attr("kind") String kind,
+                        @Attr("x") double x, @Attr("y") double y);
 }

@@ -73,8 +73,8 @@ public final class Relay extends RobotTask implements RelayI, Handover {
     }
 
     @Override
-    public void linkQuality(String peer, double quality) {
-        raise("linkQuality", peer, quality);
+    public void linkQuality(String name, String uav, double quality) {
+        raise("linkQuality", name, uav, quality);
     }
 
     @Override
@@ -92,7 +92,7 @@ public final class Relay extends RobotTask implements RelayI, Handover {
             boolean is = q >= threshold;
             if (was == null || was != is) {
                 above.put(peer, is);
-                linkQuality(peer, q);
+                linkQuality("linkQuality", peer, q);
             }
             if (q < worst) {
                 worst = q;

@@ -30,7 +30,11 @@ public interface RelayI {
     @Op("peers")
     List<String> peers();
 
-    /** The link to a kept peer crossed the threshold (either way), or was first measured. */
+    /**
+     * The link to a kept peer crossed the threshold (either way), or was first measured. The
+     * attributes are those of the architecture's {@code linkQuality} template
+     * (policies/boot/events.p2): {@code name} is the event's name, {@code uav} the far end.
+     */
     @TaskEvent
-    void linkQuality(@Attr("peer") String peer, @Attr("quality") double quality);
+    void linkQuality(@Attr("name") String name, @Attr("uav") String uav, @Attr("quality") double quality);
 }

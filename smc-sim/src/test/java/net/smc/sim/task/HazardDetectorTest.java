@@ -19,9 +19,11 @@ class HazardDetectorTest {
         world.run(2);
         List<String[]> found = log.of("hazardDetected");
         assertEquals(1, found.size(), "events: " + log.lines);
-        assertEquals("chemical", found.get(0)[0]);
-        assertEquals(3.5, EventLog.num(found.get(0)[1]), 1e-9);
-        assertEquals(3.2, EventLog.num(found.get(0)[2]), 1e-9);
+        assertEquals("hazardDetected", found.get(0)[0]);
+        assertEquals("r1", found.get(0)[1]);
+        assertEquals("chemical", found.get(0)[2]);
+        assertEquals(3.5, EventLog.num(found.get(0)[3]), 1e-9);
+        assertEquals(3.2, EventLog.num(found.get(0)[4]), 1e-9);
         assertEquals(List.of(List.of("h1", "chemical", 3.5, 3.2)), detector.hazards());
     }
 

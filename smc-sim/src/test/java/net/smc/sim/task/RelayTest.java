@@ -24,8 +24,9 @@ class RelayTest {
         assertTrue(distance <= 4.5, "distance " + distance);
         List<String[]> events = log.of("linkQuality");
         assertTrue(events.size() >= 2, "events: " + log.lines);
-        assertTrue(EventLog.num(events.get(0)[1]) < 0.5, "first report below the threshold");
-        assertTrue(EventLog.num(events.get(events.size() - 1)[1]) >= 0.5, "last report above it");
+        assertEquals("base", events.get(0)[1], "the far end");
+        assertTrue(EventLog.num(events.get(0)[2]) < 0.5, "first report below the threshold");
+        assertTrue(EventLog.num(events.get(events.size() - 1)[2]) >= 0.5, "last report above it");
         world.run(5);
         assertEquals(0, relay.speed(), 1e-9, "it stops once the link is good");
     }

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
@@ -13,6 +15,9 @@ import net.smc.core.capability.OperationDescription;
 import net.smc.core.capability.TaskDescription;
 import net.smc.core.task.Task;
 import net.smc.sim.map.OccupancyGrid;
+import net.smc.policy.PolicyEngine;
+import net.smc.policy.api.Diagnostic;
+import net.smc.policy.api.PolicyRepository;
 import org.junit.jupiter.api.Test;
 
 /** The capability descriptions of the tasks, in the shape of the paper's Table V. */
@@ -55,13 +60,14 @@ class TaskCatalogTest {
 
     @Test
     void theOtherTasks_carryTheirEvents() {
-        assertEquals(List.of(new EventDescription("hazardDetected", List.of(new Attribute("kind", "String"),
+        assertEquals(List.of(new EventDescription("hazardDetected", List.of(new Attribute("name", "String"),
+                new Attribute("uav", "String"), new Attribute("kind", "String"),
                 new Attribute("x", "double"), new Attribute("y", "double")))), catalog.describe("HazardDetector").events());
         assertEquals(List.of("hazardAdded"), eventNames("Aggregator"));
         assertTrue(catalog.describe("Aggregator").operations()
                 .contains(new OperationDescription("report", List.of("String", "double", "double"))));
-        assertEquals(List.of(new EventDescription("linkQuality", List.of(new Attribute("peer", "String"),
-                new Attribute("quality", "double")))), catalog.describe("Relay").events());
+        assertEquals(List.of(new EventDescription("linkQuality", List.of(new Attribute("name", "String"),
+                new Attribute("uav", "String"), new Attribute("quality", "double")))), catalog.describe("Relay").events());
         assertEquals(List.of(new EventDescription("distress", List.of(new Attribute("x", "double"),
                 new Attribute("y", "double"), new Attribute("condition", "String")))), catalog.describe("Beacon").events());
         assertEquals(List.of("assisted"), eventNames("Assist"));
@@ -88,6 +94,21 @@ class TaskCatalogTest {
                     name + " at root/task");
         }
         log.assertNoErrors();
+    }
+
+    @Test
+    void everyTask_bindsInACellBootedWithTheArchitecturesEvents() throws Exception {
+        // A vehicle's cell boots with policy:/boot/events before any role loads; a task whose event
+        // shares a template's name must carry that template's attributes, or its role cannot load.
+        List<Diagnostic> errors = new ArrayList<>();
+        PolicyEngine cell = PolicyEngine.builder().errors(errors::add)
+                .repository(new PolicyRepository(Path.of(System.getProperty("smc.repo.dir")))).build();
+        assertTrue(cell.load("policy:/boot/events").ok(), "boot: " + errors);
+        TaskContext context = new TaskContext(new FakeWorld(5, 5).robot("r1", 1, 1, 0), new OccupancyGrid(0, 0, 5, 5, 0.25));
+        for (String name : catalog.names()) {
+            catalog.create(name, context).bind(cell);
+        }
+        assertEquals(List.of(), errors);
     }
 
     @Test
