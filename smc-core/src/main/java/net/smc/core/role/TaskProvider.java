@@ -1,5 +1,7 @@
 package net.smc.core.role;
 
+import java.util.Collections;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import net.smc.core.task.Task;
@@ -13,17 +15,25 @@ import net.smc.core.task.Task;
 public interface TaskProvider {
 
     /** A vehicle that runs no tasks: roles load without them. */
-    TaskProvider NONE = new TaskProvider() {
-        @Override
-        public Optional<Task> task(String name) {
-            return Optional.empty();
-        }
+    TaskProvider NONE = of(Map.of());
 
-        @Override
-        public Set<String> names() {
-            return Set.of();
-        }
-    };
+    /**
+     * The tasks of a map, by name: the map is read at each call (a caller may fill it later), and
+     * never changed here.
+     */
+    static TaskProvider of(Map<String, ? extends Task> tasks) {
+        return new TaskProvider() {
+            @Override
+            public Optional<Task> task(String name) {
+                return Optional.ofNullable(tasks.get(name));
+            }
+
+            @Override
+            public Set<String> names() {
+                return Collections.unmodifiableSet(tasks.keySet());
+            }
+        };
+    }
 
     /** The vehicle's task of that name, if it has one. */
     Optional<Task> task(String name);

@@ -123,17 +123,7 @@ public final class WorldTeam {
             own.put(name, catalog.create(name, context));
         }
         tasks.put(vehicle, own);
-        return new TaskProvider() {
-            @Override
-            public Optional<Task> task(String name) {
-                return Optional.ofNullable(own.get(name));
-            }
-
-            @Override
-            public Set<String> names() {
-                return own.keySet();
-            }
-        };
+        return TaskProvider.of(own);
     }
 
     /** The capability description of a placed vehicle: its resources and its tasks' Table V descriptions. */

@@ -8,8 +8,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.HashMap;
 import java.util.Map;
-import java.util.Optional;
-import java.util.Set;
 import java.util.TreeMap;
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.Missions;
@@ -117,17 +115,7 @@ class RoleTasksTest {
             });
         }
         tasks.put(v.id(), own);
-        return new TaskProvider() {
-            @Override
-            public Optional<Task> task(String name) {
-                return Optional.ofNullable(own.get(name));
-            }
-
-            @Override
-            public Set<String> names() {
-                return own.keySet();
-            }
-        };
+        return TaskProvider.of(own);
     }
 
     private TeamSimulation formed() {

@@ -9,8 +9,6 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import java.util.Set;
 import java.util.TreeMap;
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.Missions;
@@ -132,17 +130,7 @@ class RolesAcrossVehiclesTest {
             }
             return m;
         });
-        return new TaskProvider() {
-            @Override
-            public Optional<Task> task(String name) {
-                return Optional.ofNullable(own.get(name));
-            }
-
-            @Override
-            public Set<String> names() {
-                return own.keySet();
-            }
-        };
+        return TaskProvider.of(own);
     }
 
     private final Map<String, SimVehicle> byId = new HashMap<>();

@@ -7,8 +7,6 @@ import java.math.BigDecimal;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import java.util.Set;
 import java.util.TreeMap;
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.Missions;
@@ -48,17 +46,7 @@ class StandardObjectsAcrossCellsTest {
                 default -> throw new IllegalArgumentException("no test task " + name);
             });
         }
-        return new TaskProvider() {
-            @Override
-            public Optional<Task> task(String name) {
-                return Optional.ofNullable(own.get(name));
-            }
-
-            @Override
-            public Set<String> names() {
-                return own.keySet();
-            }
-        };
+        return TaskProvider.of(own);
     }
 
     private static String holder(TeamSimulation sim, String role) {
