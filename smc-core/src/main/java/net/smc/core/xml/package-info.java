@@ -14,7 +14,7 @@
  * try {
  *     XmlElement root = reader.read(text);
  * } catch (XmlRefusal e) {
- *     System.err.println(e.line() + ":" + e.column() + ": " + e.getMessage());
+ *     reporter.refused(file, e.line(), e.column(), e.getMessage());   // FILE:LINE:COL: what; rule
  * }
  * }</pre>
  */

@@ -59,7 +59,7 @@ public final class ForgedFloodHarness {
                 CellHost.Settings s = CellHost.settings(v.id(), mission, v.description(), repository)
                         .udp(UdpSettings.defaults().withPort(port).withBroadcast("127.255.255.255", broadcastPort))
                         .commander(v.commander()).seed(7 + port).trace(events::add)
-                        .security(TeamSimulation.identity(v, mission.instanceName()), TeamSimulation.trust(mission.instanceName()));
+                        .security(SimIdentities.identity(v, mission.instanceName()), SimIdentities.trust(mission.instanceName()));
                 hosts.put(v.id(), CellHost.open(s, loop));
                 at.put(v.id(), new InetSocketAddress("127.0.0.1", port));
             }
@@ -76,8 +76,8 @@ public final class ForgedFloodHarness {
             events.clear();
             Map<String, List<String>> rolesBefore = roles(hosts);
             SimVehicle commander = team.stream().filter(SimVehicle::commander).findFirst().orElseThrow();
-            SecureEndpoint forger = SecureEndpoint.builder(TeamSimulation.identity(commander, mission.instanceName()),
-                    TeamSimulation.trust(mission.instanceName()), new SystemClock()).build();
+            SecureEndpoint forger = SecureEndpoint.builder(SimIdentities.identity(commander, mission.instanceName()),
+                    SimIdentities.trust(mission.instanceName()), new SystemClock()).build();
             ThreadMXBean threads = ManagementFactory.getThreadMXBean();
             long cpuBefore = cellCpu(threads);
 

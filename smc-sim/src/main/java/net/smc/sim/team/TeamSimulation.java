@@ -1,7 +1,5 @@
 package net.smc.sim.team;
 
-import java.security.NoSuchAlgorithmException;
-import java.security.SecureRandom;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -10,9 +8,7 @@ import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BiConsumer;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
@@ -24,13 +20,9 @@ import net.smc.core.cell.Scheme;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.mission.Mission;
 import net.smc.core.role.TaskProvider;
-import net.smc.core.security.Claims;
-import net.smc.core.security.Credential;
 import net.smc.core.security.IdealAuthentication;
-import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
-import net.smc.core.security.SigningKey;
 import net.smc.core.security.TrustAnchor;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Transport;
@@ -39,7 +31,6 @@ import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.task.TaskCatalog;
-import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 
 /**
@@ -48,11 +39,11 @@ import net.smc.sim.world.SimWorld;
  * delays, each cell's random choices), so a run replays exactly.
  *
  * <p>Time moves in steps ({@link #STEP_MILLIS}); after every step the {@link TeamInvariants} are
- * checked (unless {@link Builder#invariantChecks} turned that off), and a violation throws {@link InvariantViolation} with the seed and the end of the
+ * checked (unless {@link TeamSimulationBuilder#invariantChecks} turned that off), and a violation throws {@link InvariantViolation} with the seed and the end of the
  * trace. Faults are applied between steps: crashes and restarts, partitions and heals, link
  * profiles (loss, duplication, re-ordering, delay), joins and leaves.
  *
- * <p>A simulation may have a world ({@link Builder#world}): each vehicle placed at a start of the
+ * <p>A simulation may have a world ({@link TeamSimulationBuilder#world}): each vehicle placed at a start of the
  * arena gets a robot there, each placed at a station is a cell without one; their tasks come
  * from a {@link TaskCatalog} on that hardware, their capability descriptions from those tasks,
  * and the world's radio carries their traffic ({@link WorldTeam}).
@@ -80,9 +71,6 @@ public final class TeamSimulation {
         NONE
     }
 
-    private static final Map<String, SigningIdentity> IDENTITIES = new ConcurrentHashMap<>();
-    private static final SigningKey AUTHORITY = key(1);
-    private static final SigningKey FOREIGN_AUTHORITY = key(2);
 
     private final Mission mission;
     private final PolicyRepository repository;
@@ -120,7 +108,7 @@ public final class TeamSimulation {
         }
     }
 
-    private TeamSimulation(Builder b) {
+    TeamSimulation(TeamSimulationBuilder b) {
         this.tasks = b.tasks;
         this.auth = b.auth;
         this.mission = b.mission;
@@ -131,7 +119,7 @@ public final class TeamSimulation {
         this.network = new InMemoryNetwork(sim, seed);
         this.network.setDefaultLink(b.link);
         this.listener = b.listener;
-        this.trust = trust(mission.instanceName());
+        this.trust = SimIdentities.trust(mission.instanceName());
         this.ideal = new IdealAuthentication(trust, sim);
         this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
         this.checking = b.checking;
@@ -151,8 +139,8 @@ public final class TeamSimulation {
         }
     }
 
-    public static Builder builder(Mission mission, PolicyRepository repository, long seed) {
-        return new Builder(mission, repository, seed);
+    public static TeamSimulationBuilder builder(Mission mission, PolicyRepository repository, long seed) {
+        return new TeamSimulationBuilder(mission, repository, seed);
     }
 
     /** Starts every vehicle's cell, and the adversary if there is one. */
@@ -198,9 +186,9 @@ public final class TeamSimulation {
         Transport raw = n.transport == null ? network.attach(n.address) : network.restart(n.address);
         Transport transport = switch (security) {
             case NONE -> raw;
-            case IDEAL -> ideal.wrap(raw, identity(n.spec, mission.instanceName()).credential());
-            case REAL -> new SecureTransport(raw, SecureEndpoint.builder(identity(n.spec, mission.instanceName()), trust, sim)
-                    .random(seeded(seed * 31 + n.address.port() + 7919L * restarts)).build());
+            case IDEAL -> ideal.wrap(raw, SimIdentities.identity(n.spec, mission.instanceName()).credential());
+            case REAL -> new SecureTransport(raw, SecureEndpoint.builder(SimIdentities.identity(n.spec, mission.instanceName()), trust, sim)
+                    .random(SimIdentities.seeded(seed * 31 + n.address.port() + 7919L * restarts)).build());
         };
         n.transport = raw;
         TaskProvider provider = world != null && world.placed(n.spec.id()) ? world.tasks(n.spec.id()) : tasks.apply(n.spec.id());
@@ -441,197 +429,5 @@ public final class TeamSimulation {
         Set<Address> out = new HashSet<>();
         vehicles.forEach(v -> out.add(node(v).address));
         return out;
-    }
-
-    /**
-     * The key and credential of a simulated or test vehicle for a mission, issued by the test
-     * authority (a foreign one for a rogue). Made once per vehicle id and JVM: Ed25519 is slow and
-     * they change no outcome.
-     */
-    public static SigningIdentity identity(SimVehicle v, String missionName) {
-        return IDENTITIES.computeIfAbsent((v.rogue() ? "rogue:" : "") + v.id() + "@" + missionName, k -> {
-            SigningKey key = key(k.hashCode() * 7919L + 3);
-            SigningKey issuer = v.rogue() ? FOREIGN_AUTHORITY : AUTHORITY;
-            return new SigningIdentity(key, Credential.issue(new Claims(v.id(), key.verificationKey(), missionName, 0,
-                    Long.MAX_VALUE / 2), issuer));
-        });
-    }
-
-    private static SigningKey key(long seed) {
-        return SigningKey.generate(seeded(seed));
-    }
-
-    /** A SecureRandom that gives the same bytes for the same seed: for keys of simulated and test vehicles only. */
-    public static SecureRandom seeded(long seed) {
-        try {
-            SecureRandom random = SecureRandom.getInstance("SHA1PRNG");
-            random.setSeed(seed);
-            return random;
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("SHA1PRNG is missing from this JDK", e);
-        }
-    }
-
-    /** What the vehicles of {@link #identity} trust: the test authority, for that mission. */
-    public static TrustAnchor trust(String missionName) {
-        return new TrustAnchor(AUTHORITY.verificationKey(), missionName);
-    }
-
-    /** Collects a simulation's settings; vehicles are required. */
-    public static final class Builder {
-        private final Mission mission;
-        private final PolicyRepository repository;
-        private final long seed;
-        private final List<SimVehicle> vehicles = new ArrayList<>();
-        private Security security = Security.IDEAL;
-        private Scheme scheme;
-        private LinkProfile link = LinkProfile.DEFAULT.withLatency(5, 10);
-        private long mergeBoundMillis = -1;
-        private Consumer<CellEvent> listener = e -> { };
-        private Function<String, TaskProvider> tasks = id -> TaskProvider.NONE;
-        private BiConsumer<String, String> output = (vehicle, line) -> { };
-        private Arena arena;
-        private TaskCatalog catalog = TaskCatalog.standard();
-        private final Map<String, String> places = new LinkedHashMap<>();
-        private final Map<String, List<String>> standalone = new LinkedHashMap<>();
-        private net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
-        private boolean adversary;
-        private boolean checking = true;
-
-        private Builder(Mission mission, PolicyRepository repository, long seed) {
-            this.mission = Objects.requireNonNull(mission, "mission");
-            this.repository = Objects.requireNonNull(repository, "repository");
-            this.seed = seed;
-        }
-
-        public Builder vehicles(Collection<SimVehicle> team) {
-            vehicles.addAll(team);
-            return this;
-        }
-
-        public Builder security(Security security) {
-            this.security = Objects.requireNonNull(security, "security");
-            return this;
-        }
-
-        /** Overrides the mission's scheme. */
-        public Builder scheme(Scheme scheme) {
-            this.scheme = Objects.requireNonNull(scheme, "scheme");
-            return this;
-        }
-
-        /** The initial profile of every link (5 ms latency, 10 ms jitter by default). */
-        public Builder link(LinkProfile profile) {
-            this.link = Objects.requireNonNull(profile, "profile");
-            return this;
-        }
-
-        /** How long two acting commanders may hear each other before one must have stepped down. */
-        public Builder mergeBound(long millis) {
-            this.mergeBoundMillis = millis;
-            return this;
-        }
-
-        /**
-         * Receives every event of every cell, and the harness's own fault actions, as they happen
-         * (the trace keeps only the last lines, as text): for measurements such as the time to a
-         * mission state.
-         */
-        public Builder listener(Consumer<CellEvent> listener) {
-            this.listener = Objects.requireNonNull(listener, "listener");
-            return this;
-        }
-
-        /**
-         * The tasks of each vehicle, by its id, asked each time its cell boots (so a restarted
-         * vehicle may get fresh ones); default {@link TaskProvider#NONE} for every vehicle.
-         */
-        public Builder tasks(Function<String, TaskProvider> tasksOfVehicle) {
-            this.tasks = Objects.requireNonNull(tasksOfVehicle, "tasksOfVehicle");
-            return this;
-        }
-
-        /** Receives what each vehicle's policies print, with the vehicle's id. */
-        public Builder output(BiConsumer<String, String> output) {
-            this.output = Objects.requireNonNull(output, "output");
-            return this;
-        }
-
-        /**
-         * Puts the team in a world on this arena: the world steps on the simulation's clock, and
-         * its radio carries the traffic of every vehicle ({@link #place} says where each is).
-         */
-        public Builder world(Arena arena) {
-            this.arena = Objects.requireNonNull(arena, "arena");
-            return this;
-        }
-
-        /** The tasks of placed vehicles, by name (default {@link TaskCatalog#standard()}). */
-        public Builder catalog(TaskCatalog catalog) {
-            this.catalog = Objects.requireNonNull(catalog, "catalog");
-            return this;
-        }
-
-        /**
-         * Places a vehicle in the world: at the arena's start {@code startOrStation} (it gets a
-         * robot there) or at its station of that id (a cell without a robot). Every vehicle of a
-         * simulation with a world must be placed.
-         */
-        public Builder place(String vehicle, String startOrStation) {
-            Objects.requireNonNull(vehicle, "vehicle");
-            Objects.requireNonNull(startOrStation, "startOrStation");
-            if (places.containsKey(vehicle)) {
-                throw new IllegalArgumentException("vehicle '" + vehicle + "' is placed already (at '" + places.get(vehicle) + "')");
-            }
-            places.put(vehicle, startOrStation);
-            return this;
-        }
-
-        /**
-         * Makes a placed vehicle stand outside the mission's roles: its tasks are started when its
-         * cell boots and the repository files {@code policyUris} are loaded into it (the soldier's
-         * wearable computer, say, whose policies drive its Beacon).
-         */
-        public Builder standalone(String vehicle, List<String> policyUris) {
-            standalone.put(Objects.requireNonNull(vehicle, "vehicle"), List.copyOf(policyUris));
-            return this;
-        }
-
-        /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
-        public Builder auth(net.smc.policy.api.AuthMode mode) {
-            this.auth = Objects.requireNonNull(mode, "auth");
-            return this;
-        }
-
-        /**
-         * Puts an {@link Adversary} on the channel: it replays, re-orders, bit-flips and forges
-         * datagrams from the start to the end of the run. It needs authentication (IDEAL or REAL).
-         */
-        public Builder adversary(boolean on) {
-            this.adversary = on;
-            return this;
-        }
-
-        /**
-         * Whether the invariants are checked after every step (default true). Off only to measure
-         * what the cells themselves cost: a check visits every cell, every 50 ms of simulated time.
-         */
-        public Builder invariantChecks(boolean on) {
-            this.checking = on;
-            return this;
-        }
-
-        public TeamSimulation build() {
-            if (vehicles.isEmpty()) {
-                throw new IllegalStateException("a simulation needs vehicles");
-            }
-            if (adversary && security == Security.NONE) {
-                throw new IllegalStateException("an adversary needs authentication to be kept out; security is NONE");
-            }
-            if (arena == null && (!places.isEmpty() || !standalone.isEmpty())) {
-                throw new IllegalStateException("vehicles are placed, but the simulation has no world; call world(arena)");
-            }
-            return new TeamSimulation(this);
-        }
     }
 }

@@ -83,7 +83,7 @@ final class UdpTeam implements AutoCloseable {
                 .udp(udp).commander(v.commander()).seed(cellSeed).trace(this::record)
                 .wrap(faults.link(v.id(), cellSeed));
         if (secure) {
-            s.security(TeamSimulation.identity(v, mission.instanceName()), TeamSimulation.trust(mission.instanceName()));
+            s.security(SimIdentities.identity(v, mission.instanceName()), SimIdentities.trust(mission.instanceName()));
         }
         try {
             hosts.put(v.id(), CellHost.open(s, loop));
