@@ -17,8 +17,9 @@ import org.junit.jupiter.params.provider.ValueSource;
 /**
  * The rescue with every cell on its own UDP sockets over loopback, signed traffic, and the world
  * stepped on the wall clock at 2 mission seconds per wall second (about 20 s of wall time a run):
- * it succeeds, the seven steps are on the timeline, the aggregator takes over, and the datagrams
- * went through the sockets. The mission-time limit is generous: on a loaded machine a live run
+ * it succeeds, the seven steps are on the timeline, the aggregator takes over, the stopped robot
+ * is cut off by its broken radio (the world's radio filters what arrives over the sockets), and the
+ * datagrams went through the sockets. The mission-time limit is generous: on a loaded machine a live run
  * is slower than a simulated one, never faster.
  */
 class LiveRescueTest {
@@ -46,6 +47,9 @@ class LiveRescueTest {
                 steps.add(r.step());
             }
             assertTrue(steps.containsAll(List.of("i", "ii", "iii", "iv", "v", "vi", "vii")), "steps " + steps + "\n" + trace);
+            boolean cutOff = s.timeline().rows().stream().anyMatch(r -> r.vehicle().equals(o.firstSurveyor())
+                    && r.timeMillis() > o.firstStopMillis() && (r.what().equals("SUSPENDED") || r.what().equals("TOOK_OVER")));
+            assertTrue(cutOff, "the stopped robot's broken radio cuts it off from the team on UDP too\n" + trace);
             assertTrue(udp.sent() + udp.broadcastsSent() > 50 && udp.delivered() > 50,
                     () -> "datagrams through the UDP sockets: " + udp);
             assertTrue(errors.isEmpty(), () -> "policy errors: " + errors);
