@@ -1,6 +1,8 @@
 package net.smc.sim.experiment;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
@@ -30,7 +32,9 @@ import net.smc.sim.team.SimVehicle;
  * measures it, on the wall clock: from the commander's {@code COMMANDING} event until every seat's
  * vehicle reported {@code ACCEPTED}. The vehicles start first and the commander last, so every
  * cell listens when the commander first discovers. Nothing is charged or modelled: loopback has no
- * radio latency, and the cells share this machine's cores.
+ * radio latency, and the cells share this machine's cores. The busiest cell's CPU time is that of
+ * its thread (where datagrams are verified, decoded and acted on, and policies loaded) from its
+ * start until the run was seen to end.
  *
  * <pre>{@code
  * SetupResult r = UdpSetupTimeRun.run(generated, mission, Scheme.DISTRIBUTED, 1, seed, 60_000);
@@ -40,6 +44,7 @@ public final class UdpSetupTimeRun {
     /** The most roles a run on loopback takes: each cell has three threads of its own. */
     public static final int MAX_ROLES = 50;
     private static final long POLL_MILLIS = 20;
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
     private UdpSetupTimeRun() {
     }
@@ -84,6 +89,9 @@ public final class UdpSetupTimeRun {
             while (!progress.complete() && System.nanoTime() < end) {
                 Thread.sleep(POLL_MILLIS);
             }
+            for (CellHost h : hosts) {
+                progress.cpu(h.call(THREADS::getCurrentThreadCpuTime));
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("interrupted while waiting for the team to set up", e);
@@ -103,6 +111,7 @@ public final class UdpSetupTimeRun {
         private long endNanos = -1;
         private long messages = -1;
         private long sentBytes = -1;
+        private long busiestCpuNanos;
 
         Progress(int needed, AtomicLong datagrams, AtomicLong bytes) {
             this.needed = needed;
@@ -125,6 +134,11 @@ public final class UdpSetupTimeRun {
             }
         }
 
+        /** A cell thread's CPU time so far, ns (-1 when the JVM does not measure it). */
+        synchronized void cpu(long nanos) {
+            busiestCpuNanos = Math.max(busiestCpuNanos, nanos);
+        }
+
         synchronized boolean complete() {
             return seats.size() >= needed;
         }
@@ -133,7 +147,7 @@ public final class UdpSetupTimeRun {
             boolean done = complete() && startNanos >= 0;
             double setup = done ? (endNanos - startNanos) / 1e6 : -1;
             return new SetupResult(roles, scheme, "udp", run, setup, done ? messages : datagrams.get(),
-                    done ? sentBytes : bytes.get(), 0, seats.size());
+                    done ? sentBytes : bytes.get(), busiestCpuNanos / 1e6, seats.size());
         }
     }
 
