@@ -68,6 +68,14 @@ class DemoCommandTest {
     }
 
     @Test
+    void rescueOverUdp_thatRunsOutOfTime_exitsOne_withTheReason(@TempDir Path out) {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "--transport", "udp", "--speed", "5", "--limit", "5", "--out", out.toString());
+        assertEquals(1, r.status(), r.out() + r.err());
+        assertTrue(r.out().contains("failed: no assistance delivered within 5.0 s"), r.out());
+        assertTrue(Files.exists(out.resolve("rescue.png")), "the picture of a failed run is written too");
+    }
+
+    @Test
     void udpWithAWindow_isAUsageError(@TempDir Path out) {
         Smc.Result r = Smc.in(PROJECT).run("demo", "--transport", "udp", "--gui", "--out", out.toString());
         assertEquals(2, r.status(), r.out() + r.err());
