@@ -37,12 +37,15 @@ final class Assignee {
     private final TeamState st;
     private final Seating seating;
     private final Merge merge;
+    /** Run when this cell has taken a role: a manager starts discovering its children at once. */
+    private final Runnable roleTaken;
 
-    Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge) {
+    Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge, Runnable roleTaken) {
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
         this.merge = merge;
+        this.roleTaken = roleTaken;
     }
 
     void onDiscovery(Envelope env, Discovery d) {
@@ -210,6 +213,7 @@ final class Assignee {
             ctx.host().importTaskStates(a.role(), a.handover());
             ctx.host().raise("handover", "handover", a.role(), a.handover());
         }
+        roleTaken.run();
     }
 
     /**

@@ -143,7 +143,10 @@ public final class TeamSimulation {
         return new TeamSimulationBuilder(mission, repository, seed);
     }
 
-    /** Starts every vehicle's cell, and the adversary if there is one. */
+    /**
+     * Starts every vehicle's cell, and the adversary if there is one: the commanders last, so that
+     * every other vehicle is listening when a commander starts and its first discovery reaches them.
+     */
     public void start() {
         if (adversary != null) {
             adversary.start();
@@ -151,9 +154,11 @@ public final class TeamSimulation {
         if (world != null) {
             world.start();
         }
-        for (Node n : nodes.values()) {
-            if (n.cell == null) {
-                boot(n, n.spec.commander());
+        for (boolean commanders : new boolean[] {false, true}) {
+            for (Node n : nodes.values()) {
+                if (n.cell == null && n.spec.commander() == commanders) {
+                    boot(n, commanders);
+                }
             }
         }
     }
