@@ -152,6 +152,13 @@ final class Assignee {
         st.incoming = null;
         RoleAssignment a = in.assignment();
         Seat seat = new Seat(a.role(), slotOf(a));
+        if (st.acting || st.left) {
+            // It took over as commander (or left) while the role's policies were on their way.
+            String why = st.acting ? "this vehicle is now the acting commander" : "this vehicle has left the team";
+            ctx.emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": " + why);
+            ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), false, why));
+            return;
+        }
         if (st.parent != null && !st.parent.vehicle().equals(in.from())) {
             if (!promotion(a.role(), a.epoch())) {
                 ctx.emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": no longer free to move up");
