@@ -160,12 +160,15 @@ final class Supervisor {
 
     /**
      * A seat offered to a vehicle is open again (it refused, or never answered): discovers at once,
-     * but not within a quarter heartbeat period of the last such discovery, so that vehicles
-     * refusing every offer cost at most four extra discoveries a period.
+     * unless capability requests are still out (their answers will find the seat open, with no
+     * broadcast: in a large team many managers compete for the same free vehicles, and each
+     * rediscovery would bring every one of them to answer again), and not within a quarter
+     * heartbeat period of the last such discovery, so that vehicles refusing every offer cost at
+     * most four extra discoveries a period.
      */
     void rediscover() {
         long now = ctx.clock().nowMillis();
-        if (now - rediscoveredMillis >= ctx.timing().comTimeoutMillis() / 4) {
+        if (st.capabilityRequests.isEmpty() && now - rediscoveredMillis >= ctx.timing().comTimeoutMillis() / 4) {
             rediscoveredMillis = now;
             discoverNow();
         }
