@@ -174,6 +174,11 @@ public final class Cell {
             }
 
             @Override
+            public long policyVersion() {
+                return engine.policyVersion();
+            }
+
+            @Override
             public List<Object> taskStates() {
                 return Cell.this.taskStates();
             }

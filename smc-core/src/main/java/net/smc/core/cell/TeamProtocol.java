@@ -110,6 +110,14 @@ final class TeamProtocol {
             throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell evaluates nothing for others");
         }
 
+        /**
+         * The version of the cell's policies ({@code PolicyEngine.policyVersion()}): it grows whenever
+         * what they decide may have changed. Always 0 for a host whose policies never change.
+         */
+        default long policyVersion() {
+            return 0;
+        }
+
         /** Reports an error in the cell's policy engine, as its own errors are. */
         default void report(String error) {
         }
@@ -152,9 +160,9 @@ final class TeamProtocol {
         this.counts = new TeamCounts(ctx, st);
         this.merge = new Merge(ctx, st, seating);
         this.backup = new BackupCommander(ctx, st, seating, counts, merge);
-        this.recruiter = new Recruiter(ctx, st, seating, counts, backup);
+        this.recruiter = new Recruiter(ctx, st, seating, counts, backup, this::rediscover);
         this.reports = new Reports(ctx, st, counts, recruiter);
-        this.assignee = new Assignee(ctx, st, seating, merge);
+        this.assignee = new Assignee(ctx, st, seating, merge, this::discoverNow);
         this.membership = new Membership(ctx, st, seating, counts, backup, reports);
         this.supervisor = new Supervisor(ctx, st, seating, counts, backup, recruiter, merge);
         this.collaboration = new Collaboration(ctx, st, assignee);
@@ -218,8 +226,19 @@ final class TeamProtocol {
             seating.recomputeOwnership();
             ctx.emit(CellEvent.Kind.COMMANDING, "acting commander of " + ctx.missionId() + " " + st.identity
                     + ", scheme " + ctx.slots().scheme().name().toLowerCase());
+            supervisor.discoverNow();
         }
         tickTimer = ctx.scheduler().schedule(tickPhaseMillis, this::tick);
+    }
+
+    /** This cell has just taken a role: as a manager, it discovers at once. */
+    private void discoverNow() {
+        supervisor.discoverNow();
+    }
+
+    /** A seat this cell offered is open again: it discovers at once (at most four times a period). */
+    private void rediscover() {
+        supervisor.rediscover();
     }
 
     void stop() {
