@@ -268,7 +268,8 @@ public final class WorldRadio implements RadioModel {
      * its links are gone from now on, not from the next refresh.
      */
     public void switchedOff(String nodeId) {
-        off[number(nodeId)] = true;
+        int n = number(nodeId);   // may grow the tables: number first
+        off[n] = true;
     }
 
     /** Whether the node's radio is on; an id the world does not know (yet) counts as on. */

@@ -4,12 +4,24 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
+import java.awt.font.FontRenderContext;
 import java.awt.font.TextLayout;
 import java.awt.geom.AffineTransform;
 import java.awt.Shape;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 
-/** Labels of one size for one picture, with a white halo so they read over paths and the floor. */
+/**
+ * Labels of one size for one picture, with a white halo so they read over paths and the floor.
+ * A label's outline and halo are laid out once and kept (the same labels come back in every frame
+ * of a film), then filled where the label goes.
+ */
 final class Text {
+    /** The most label shapes kept; past it the cache starts afresh. */
+    private static final int CACHED = 1_024;
+    private static final Map<Key, Glyphs> SHAPES = new ConcurrentHashMap<>();
+    private static final Color HALO = new Color(255, 255, 255, 200);
+
     private final Font font;
     private final Font bold;
 
@@ -46,11 +58,36 @@ final class Text {
         if (s == null || s.isEmpty()) {
             return;
         }
-        Shape outline = new TextLayout(s, f, g.getFontRenderContext()).getOutline(AffineTransform.getTranslateInstance(x, y));
-        g.setColor(new Color(255, 255, 255, 200));
-        g.setStroke(new BasicStroke(Math.max(2f, f.getSize() / 4f), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-        g.draw(outline);
+        Glyphs glyphs = glyphs(s, f, g.getFontRenderContext());
+        AffineTransform saved = g.getTransform();
+        g.translate(x, y);
+        g.setColor(HALO);
+        g.fill(glyphs.halo);
         g.setColor(colour);
-        g.fill(outline);
+        g.fill(glyphs.outline);
+        g.setTransform(saved);
+    }
+
+    private static Glyphs glyphs(String s, Font f, FontRenderContext context) {
+        Key key = new Key(s, f, context);
+        Glyphs known = SHAPES.get(key);
+        if (known == null) {
+            Shape outline = new TextLayout(s, f, context).getOutline(null);
+            Shape halo = new BasicStroke(Math.max(2f, f.getSize() / 4f), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND)
+                    .createStrokedShape(outline);
+            known = new Glyphs(outline, halo);
+            if (SHAPES.size() >= CACHED) {
+                SHAPES.clear();
+            }
+            SHAPES.put(key, known);
+        }
+        return known;
+    }
+
+    private record Key(String text, Font font, FontRenderContext context) {
+    }
+
+    /** A label's letters and the halo round them, with the baseline's left end at (0, 0). */
+    private record Glyphs(Shape outline, Shape halo) {
     }
 }

@@ -188,6 +188,15 @@ class WorldRadioTest {
     }
 
     @Test
+    void aRobotDisabledBeforeTheRadioFirstHeardOfIt_isSilent() {
+        SimWorld world = world(Worlds.arena(12, 6, "<start id='s0' x='1' y='1'/>"), new SimulationScheduler());
+        world.addRobot("a", Worlds.start(2, 3, 0), KoalaSpec.koala()).disable("test");
+        world.addRobot("b", Worlds.start(5, 3, 0), KoalaSpec.koala());
+        assertEquals(0, world.radio().quality("a", "b"));
+        assertEquals(0, world.radio().quality("b", "a"));
+    }
+
+    @Test
     void refreshOutOfRange_isRefusedNamingTheSetting() {
         IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
                 () -> SHORT.withRefreshMillis(0));
