@@ -111,13 +111,14 @@ final class Supervisor {
         }
         fillSecondarySeats();
         swapTowardsOptimal(now);
-        boolean open = st.hasVacancy();
+        // While a policy holds recruiting, the manager looks for no one: no discovery, so no assignment.
+        boolean open = st.hasVacancy() && !st.recruitingHeld;
         if (open && !st.discovering) {
             ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
                     + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
         }
         st.discovering = open;
-        if (open || (st.acting && st.ticks % Timing.BEACON_TICKS == 0)) {
+        if (open || (st.acting && !st.recruitingHeld && st.ticks % Timing.BEACON_TICKS == 0)) {
             merge.discover();
         }
         if (st.acting && st.ticks % Timing.ROSTER_TICKS == 0) {

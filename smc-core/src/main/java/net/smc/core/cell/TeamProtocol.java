@@ -267,6 +267,19 @@ final class TeamProtocol {
         recruiter.requestFullCapability(uav, role);
     }
 
+    /**
+     * Asked by a policy ({@code root/discovery hold} or {@code resume}): while held, this cell as a
+     * manager sends no discovery broadcast, so it recruits no one; on resume it discovers at its
+     * next tick as usual.
+     */
+    void holdRecruiting(boolean held) {
+        st.recruitingHeld = held;
+    }
+
+    boolean recruitingHeld() {
+        return st.recruitingHeld;
+    }
+
     /** Asked by a policy ({@code root/role/<manager> reassign: role scheme: s}): find the role a new holder. */
     void reassign(String managingRole, String role, String scheme) {
         supervisor.reassign(managingRole, role, scheme);
