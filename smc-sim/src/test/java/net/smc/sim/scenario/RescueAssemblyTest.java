@@ -38,7 +38,7 @@ class RescueAssemblyTest {
     void noDiscoveryOrAssignmentBeforeTheDistressCall(long seed) throws Exception {
         RescueScenario s = RescueScenario.load(PROJECT, RescueScenario.Settings.of(seed)
                 .withSecurity(TeamSimulation.Security.IDEAL), row -> { });
-        TeamSimulation team = s.team();
+        TeamSimulation team = (TeamSimulation) s.team();   // the simulated transport: one virtual clock
         // every discovery or assignment datagram copy on the air: when it was seen, and what it was
         List<String> assembly = new ArrayList<>();
         long[] first = {Long.MAX_VALUE};
