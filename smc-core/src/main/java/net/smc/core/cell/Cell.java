@@ -14,7 +14,6 @@ import java.util.function.Consumer;
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.comm.CommunicationManager;
 import net.smc.core.comm.SenderSettings;
-import net.smc.core.discovery.DiscoveryActions;
 import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.message.CellRequest;
 import net.smc.core.message.Identity;
@@ -189,22 +188,7 @@ public final class Cell {
                 .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
         this.gateway = new ExternalGateway(roles);
-        new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), new DiscoveryActions() {
-            @Override
-            public void requestFullCapability(String uav, String role) {
-                protocol.requestFullCapability(uav, role);
-            }
-
-            @Override
-            public void holdRecruiting(boolean held) {
-                protocol.holdRecruiting(held);
-            }
-
-            @Override
-            public boolean recruitingHeld() {
-                return protocol.recruitingHeld();
-            }
-        }).install(engine);
+        new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol).install(engine);
         protocol.register(router);
         engine.teamLink(new TeamLink() {
             @Override

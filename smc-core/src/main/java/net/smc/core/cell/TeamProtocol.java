@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.BiConsumer;
 
+import net.smc.core.discovery.DiscoveryActions;
 import net.smc.core.message.AssignmentResponse;
 import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
@@ -54,7 +55,7 @@ import net.smc.core.transport.Cancellable;
  * of seats, identities and priorities are {@link Slots}'; the times are {@link Timing}'s. See
  * <a href="doc-files/team-protocols.md">the team-protocols design note</a>.
  */
-final class TeamProtocol {
+final class TeamProtocol implements DiscoveryActions {
 
     /** What the protocol needs of the rest of its cell. */
     interface Host {
@@ -263,7 +264,8 @@ final class TeamProtocol {
     // ---------------------------------------------------------------- asked by policies and tasks
 
     /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
-    void requestFullCapability(String uav, String role) {
+    @Override
+    public void requestFullCapability(String uav, String role) {
         recruiter.requestFullCapability(uav, role);
     }
 
@@ -272,11 +274,13 @@ final class TeamProtocol {
      * manager sends no discovery broadcast, so it recruits no one; on resume it discovers at its
      * next tick as usual.
      */
-    void holdRecruiting(boolean held) {
+    @Override
+    public void holdRecruiting(boolean held) {
         st.recruitingHeld = held;
     }
 
-    boolean recruitingHeld() {
+    @Override
+    public boolean recruitingHeld() {
         return st.recruitingHeld;
     }
 
