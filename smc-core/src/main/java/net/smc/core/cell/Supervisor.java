@@ -126,7 +126,7 @@ final class Supervisor {
         fillSecondarySeats();
         swapTowardsOptimal(now);
         boolean open = noteDiscovering();
-        if (open || (st.acting && st.ticks % Timing.BEACON_TICKS == 0)) {
+        if (open || (st.acting && !st.recruitingHeld && st.ticks % Timing.BEACON_TICKS == 0)) {
             merge.discover();
         }
         if (st.acting && st.ticks % Timing.ROSTER_TICKS == 0) {
@@ -137,7 +137,8 @@ final class Supervisor {
 
     /** Whether this cell has an open seat; a DISCOVERING event marks each start of discovery. */
     private boolean noteDiscovering() {
-        boolean open = st.hasVacancy();
+        // While a policy holds recruiting, the manager looks for no one: no discovery, so no assignment.
+        boolean open = st.hasVacancy() && !st.recruitingHeld;
         if (open && !st.discovering) {
             ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
                     + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());

@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.BiConsumer;
 
+import net.smc.core.discovery.DiscoveryActions;
 import net.smc.core.message.AssignmentResponse;
 import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
@@ -54,7 +55,7 @@ import net.smc.core.transport.Cancellable;
  * of seats, identities and priorities are {@link Slots}'; the times are {@link Timing}'s. See
  * <a href="doc-files/team-protocols.md">the team-protocols design note</a>.
  */
-final class TeamProtocol {
+final class TeamProtocol implements DiscoveryActions {
 
     /** What the protocol needs of the rest of its cell. */
     interface Host {
@@ -282,8 +283,27 @@ final class TeamProtocol {
     // ---------------------------------------------------------------- asked by policies and tasks
 
     /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
-    void requestFullCapability(String uav, String role) {
+    @Override
+    public void requestFullCapability(String uav, String role) {
         recruiter.requestFullCapability(uav, role);
+    }
+
+    /**
+     * Asked by a policy ({@code root/discovery hold} or {@code resume}): while held, this cell as a
+     * manager sends no discovery broadcast, so it recruits no one; on resume it discovers at once,
+     * as a manager whose role has just started does.
+     */
+    @Override
+    public void holdRecruiting(boolean held) {
+        st.recruitingHeld = held;
+        if (!held) {
+            supervisor.discoverNow();
+        }
+    }
+
+    @Override
+    public boolean recruitingHeld() {
+        return st.recruitingHeld;
     }
 
     /** Asked by a policy ({@code root/role/<manager> reassign: role scheme: s}): find the role a new holder. */

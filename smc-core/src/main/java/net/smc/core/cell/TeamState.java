@@ -64,6 +64,8 @@ final class TeamState {
     MissionState missionState;
     /** Whether the last tick found an open seat (a DISCOVERING event marks each start). */
     boolean discovering;
+    /** Recruiting held by policy ({@code root/discovery hold}): as a manager, no discovery is sent. */
+    boolean recruitingHeld;
 
     // As a backup commander (written by BackupCommander, Membership, Seating).
     Roster roster;
