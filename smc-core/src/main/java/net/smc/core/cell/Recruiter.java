@@ -67,8 +67,8 @@ final class Recruiter {
         }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
-        if (st.children.containsKey(env.sender()) || !st.hasVacancy()) {
-            return;
+        if (st.children.containsKey(env.sender()) || !st.hasVacancy() || st.recruitingHeld) {
+            return; // held: a policy keeps this manager from recruiting, replies to an earlier discovery included
         }
         // Table I decides whom to ask: newUAV(name uav lowLevelCap credential).
         // A vehicle that presented no credential (or a cell without authentication) gives PonderTalk nil.
@@ -138,7 +138,7 @@ final class Recruiter {
 
     void onCapabilityReply(Envelope env, CapabilityReply r) {
         PendingCapability pending = st.capabilityRequests.remove(env.sender());
-        if (pending == null) {
+        if (pending == null || st.recruitingHeld) {
             return;
         }
         CapabilityDescription full = r.description();

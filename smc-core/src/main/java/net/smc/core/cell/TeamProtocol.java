@@ -290,7 +290,8 @@ final class TeamProtocol implements DiscoveryActions {
 
     /**
      * Asked by a policy ({@code root/discovery hold} or {@code resume}): while held, this cell as a
-     * manager sends no discovery broadcast, so it recruits no one; on resume it discovers at once,
+     * manager sends no discovery broadcast and takes up no reply to one sent before, so it recruits
+     * no one; on resume it discovers at once,
      * as a manager whose role has just started does.
      */
     @Override
