@@ -1,6 +1,7 @@
 package net.smc.sim.team;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.IdentityHashMap;
@@ -127,18 +128,24 @@ public final class TeamInvariants {
     /**
      * Fails when the parent relation has a cycle. A walk up the parents from a cell that meets no
      * cell twice takes at most one step per cell, so only a walk longer than that can have met one:
-     * then the walk is made again, remembering the cells met, to name them.
+     * then the walk is made again, remembering the cells met, to name them. A walk that reaches a
+     * cell an earlier walk passed through ends there: from that cell on, the way up is known to end.
      */
     private void checkCycles(List<Cell> cells, Map<String, Cell> byId) {
+        Set<Cell> ending = Collections.newSetFromMap(new IdentityHashMap<>());
+        List<Cell> walked = new ArrayList<>();
         for (Cell c : cells) {
             int steps = 0;
             Cell at = c;
-            while (at != null && at.parent().isPresent()) {
+            while (at != null && !ending.contains(at) && at.parent().isPresent()) {
                 if (++steps > cells.size()) {
                     nameCycle(c, byId);
                 }
+                walked.add(at);
                 at = byId.get(at.parent().get());
             }
+            ending.addAll(walked);
+            walked.clear();
         }
     }
 
