@@ -29,8 +29,11 @@ import net.smc.sim.render.TrajectoryRecorder;
 import net.smc.sim.render.WorldPainter;
 import net.smc.sim.robot.SimRobot;
 import net.smc.sim.task.Assist;
+import net.smc.sim.team.CellTeam;
+import net.smc.sim.team.LiveTeam;
 import net.smc.sim.team.SimVehicle;
 import net.smc.sim.team.TeamSimulation;
+import net.smc.sim.team.TeamSimulationBuilder;
 import net.smc.sim.team.WorldTeam;
 import net.smc.sim.arena.Arena;
 import net.smc.sim.arena.ArenaException;
@@ -43,7 +46,8 @@ import net.smc.sim.world.WorldStepListener;
  * the commander's laptop ({@code cdr}) and the soldier's wearable computer ({@code wearable}) at
  * their stations, two robots ({@code r1}, {@code r2}) at their starts, on the world's radio,
  * with authenticated traffic and policies checked against a default of deny, as deployed. The scenario only wounds the soldier (step (i)); the wearable's
- * policy calls for help (ii), Table I assembles the team (iii), the surveyor's policy drives it
+ * policy calls for help (ii); the commander's policy, which has held its recruiting since the
+ * role was loaded, resumes it on the distress, and Table I assembles the team (iii); the surveyor's policy drives it
  * to the soldier until the hazard stops it (iv), Table II re-assigns its role on the failure
  * timeout with its last position (v), the new surveyor's policy avoids that zone (vi) and
  * delivers assistance (vii).
@@ -52,8 +56,11 @@ import net.smc.sim.world.WorldStepListener;
  * RescueScenario rescue = RescueScenario.load(Path.of("."), RescueScenario.Settings.of(7));
  * RescueScenario.Outcome outcome = rescue.run();   // outcome.succeeded(), rescue.timeline() ...
  * }</pre>
+ *
+ * <p>{@link #loadLive} runs the same scenario with every cell on real UDP over loopback and the
+ * world stepped in real time ({@link LiveTeam}); close it when done.
  */
-public final class RescueScenario {
+public final class RescueScenario implements AutoCloseable {
     /** The robots' resources and tasks: able to navigate, communicate, survey and detect hazards. */
     static final Set<String> ROBOT_RESOURCES = Set.of("motion", "video", "chemical", "communication");
     static final Set<String> ROBOT_TASKS = Set.of("Navigator", "Assist", "HazardDetector", "Aggregator");
@@ -120,7 +127,7 @@ public final class RescueScenario {
     }
 
     private final Settings settings;
-    private final TeamSimulation team;
+    private final CellTeam team;
     private final WorldTeam world;
     private final Arena.Hazard hazard;
     private final Timeline timeline = new Timeline();
@@ -136,9 +143,16 @@ public final class RescueScenario {
     private double closest = Double.NaN;
     private String trouble;
     private boolean zoneMarked;
+    private long distressHeard = -1;
+
+    /** Makes the team of the scenario from its settings: a simulation, or a live team. */
+    @FunctionalInterface
+    interface TeamMaker {
+        CellTeam make(TeamSimulationBuilder builder) throws IOException;
+    }
 
     private RescueScenario(Mission mission, PolicyRepository repository, Arena arena, Settings settings,
-                           Consumer<Timeline.Row> printer) {
+                           Consumer<Timeline.Row> printer, TeamMaker maker) throws IOException {
         this.settings = settings;
         this.printer = printer;
         this.hazard = arena.hazards().stream().findFirst()
@@ -148,13 +162,12 @@ public final class RescueScenario {
                 new SimVehicle("wearable", Set.of("bodySensors"), Set.of("Beacon"), false, false),
                 new SimVehicle("r1", ROBOT_RESOURCES, ROBOT_TASKS, false, false),
                 new SimVehicle("r2", ROBOT_RESOURCES, ROBOT_TASKS, false, false));
-        this.team = TeamSimulation.builder(mission, repository, settings.seed())
+        this.team = maker.make(TeamSimulation.builder(mission, repository, settings.seed())
                 .vehicles(vehicles).security(settings.security()).auth(AuthMode.DENY)
                 .link(LinkProfile.DEFAULT.withLatency(5, 10).withLoss(settings.loss()))
                 .world(arena).place("cdr", "cdr").place("wearable", "wearable").place("r1", "r1").place("r2", "r2")
                 .standalone("wearable", WEARABLE_POLICIES)
-                .listener(this::cellEvent).output(this::policyOutput)
-                .build();
+                .listener(this::cellEvent).output(this::policyOutput));
         this.world = team.world();
         SimWorld w = world.world();
         scene.roles(RoleLabels.of(roles)).trajectories(tracks).caption("(i) the soldier is wounded");
@@ -189,6 +202,22 @@ public final class RescueScenario {
      */
     public static RescueScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer)
             throws IOException, MissionException, ArenaException {
+        return load(projectDir, settings, printer, TeamSimulationBuilder::build);
+    }
+
+    /**
+     * The rescue with every cell on its own UDP sockets over loopback and the world stepped in
+     * real time, {@code speed} mission seconds per wall second ({@link LiveTeam}). The settings'
+     * security is ignored (traffic is always signed with fresh keys); its loss drops arriving
+     * datagrams. Close the scenario when done.
+     */
+    public static RescueScenario loadLive(Path projectDir, Settings settings, double speed, Consumer<Timeline.Row> printer)
+            throws IOException, MissionException, ArenaException {
+        return load(projectDir, settings, printer, b -> LiveTeam.open(b, speed));
+    }
+
+    private static RescueScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer, TeamMaker maker)
+            throws IOException, MissionException, ArenaException {
         PolicyRepository repository = new PolicyRepository(projectDir.resolve("policies"));
         Path instance = projectDir.resolve("missions/rescue.instance.xml");
         Path worldFile = projectDir.resolve("missions/worlds/rescue.xml");
@@ -198,7 +227,7 @@ public final class RescueScenario {
             }
         }
         Mission mission = new MissionLoader(repository).load(instance);
-        return new RescueScenario(mission, repository, ArenaReader.read(worldFile), settings, printer);
+        return new RescueScenario(mission, repository, ArenaReader.read(worldFile), settings, printer, maker);
     }
 
     /** Runs the rescue until assistance is delivered, something goes wrong, or the time limit. */
@@ -211,9 +240,12 @@ public final class RescueScenario {
     /** Starts the cells and wounds the soldier (step (i)); then {@link #advance} and {@link #finish}. */
     public void start() {
         team.start();
-        row(0, "wearable", "WOUNDED", "the soldier is wounded: critical", "i");
-        team.cell("wearable").engine().raise("root/event/wounded", "wounded", "critical");
-        scene.caption("(ii) the wearable computer calls for help");
+        team.exclusive(() -> {
+            row(team.nowMillis(), "wearable", "WOUNDED", "the soldier is wounded: critical", "i");
+            team.cell("wearable").engine().raise("root/event/wounded", "wounded", "critical");
+            scene.caption("(ii) the wearable computer calls for help");
+            return null;
+        });
     }
 
     /** Runs for at most {@code millis} of mission time, less if the run ends. */
@@ -231,6 +263,10 @@ public final class RescueScenario {
 
     /** Ends the run and tells how it went. */
     public Outcome finish() {
+        return team.exclusive(this::conclude);
+    }
+
+    private Outcome conclude() {
         if (film != null) {
             film.capture(world.world());
         }
@@ -321,12 +357,12 @@ public final class RescueScenario {
                         reassigned = e.timeMillis();
                         secondSurveyor = e.vehicle();
                     }
-                } else if (firstStop < 0) {
+                } else if (firstStop < 0 && distressHeard >= 0) {
                     step = "iii";
                 }
             }
             case FAILURE, REASSIGNING -> step = firstStop >= 0 ? "v" : "";
-            case ASSIGNED, MISSION_STATE, COMMANDING -> step = firstStop < 0 ? "iii" : "v";
+            case ASSIGNED, MISSION_STATE, COMMANDING -> step = firstStop >= 0 ? "v" : distressHeard >= 0 ? "iii" : "";
             case DISCOVERING, ASSIGNING, HOSTING -> {
                 return;   // protocol detail: not on the timeline
             }
@@ -347,6 +383,9 @@ public final class RescueScenario {
             step = "i";
         } else if (line.startsWith("distress from")) {
             step = "ii";
+            if (vehicle.equals("cdr") && distressHeard < 0) {
+                distressHeard = team.nowMillis();
+            }
         } else if (line.startsWith("heading for the soldier")) {
             step = vehicle.equals(secondSurveyor) ? "vi" : "iv";
         } else if (line.startsWith("took over")) {
@@ -373,6 +412,10 @@ public final class RescueScenario {
 
     /** What each live cell's policies reported as errors (a policy denied, a failed send ...), by vehicle. */
     public Map<String, List<String>> diagnostics() {
+        return team.exclusive(this::errors);
+    }
+
+    private Map<String, List<String>> errors() {
         Map<String, List<String>> out = new LinkedHashMap<>();
         for (SimVehicle v : team.vehicles()) {
             Cell c = team.cell(v.id());
@@ -387,6 +430,11 @@ public final class RescueScenario {
         return timeline;
     }
 
+    /** When the commander heard the soldier's distress (step (ii)), ms of mission time, or -1. */
+    public long distressHeardMillis() {
+        return distressHeard;
+    }
+
     public Scene scene() {
         return scene;
     }
@@ -395,8 +443,15 @@ public final class RescueScenario {
         return world.world();
     }
 
-    public TeamSimulation team() {
+    /** The team: a {@link TeamSimulation}, or a {@link LiveTeam} when loaded with {@link #loadLive}. */
+    public CellTeam team() {
         return team;
+    }
+
+    /** Stops the team's threads and closes its sockets, if it has any (a live team); the world stays to be drawn. */
+    @Override
+    public void close() {
+        team.close();
     }
 
     public TrajectoryRecorder trajectories() {
