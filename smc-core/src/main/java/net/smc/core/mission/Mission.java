@@ -39,7 +39,7 @@ public record Mission(String className, String instanceName, List<MissionRole> r
         Objects.requireNonNull(className, "className");
         Objects.requireNonNull(instanceName, "instanceName");
         Objects.requireNonNull(colocation, "colocation");
-        roles = List.copyOf(roles);
+        roles = RoleList.of(roles);
         parameters = Collections.unmodifiableMap(new LinkedHashMap<>(parameters));
         Set<String> names = new HashSet<>();
         for (MissionRole role : roles) {
@@ -80,7 +80,7 @@ public record Mission(String className, String instanceName, List<MissionRole> r
 
     /** The role called {@code name}. */
     public Optional<MissionRole> role(String name) {
-        return roles.stream().filter(r -> r.name().equals(name)).findFirst();
+        return Optional.ofNullable(((RoleList) roles).named(name));
     }
 
     /** The commander role (there always is one). */

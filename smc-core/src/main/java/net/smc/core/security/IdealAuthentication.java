@@ -1,10 +1,12 @@
 package net.smc.core.security;
 
 import java.nio.ByteBuffer;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.WeakHashMap;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
@@ -45,9 +47,20 @@ import net.smc.core.transport.Transport;
  * or verification), which lets thousands of simulated team runs fit in a test run. The real one is
  * exercised by its own tests and by simulation runs that use it.
  *
+ * <p>A credential's signature is verified once per JVM and authority key: a simulation that runs
+ * the same vehicles many times (a fault sweep, an experiment's runs) checks each credential's
+ * signature the first time only, and its validity period and mission every time.
+ *
  * <p>One instance serves one simulated network; all calls on the simulation's thread.
  */
 public final class IdealAuthentication {
+    /**
+     * Credentials whose signature has been verified, with the authority key that verified it: a pure
+     * function of the two, so remembered for every instance (weakly: a credential no one holds goes).
+     */
+    private static final Map<Credential, VerificationKey> SIGNATURES_VERIFIED =
+            Collections.synchronizedMap(new WeakHashMap<>());
+
     private final TrustAnchor trust;
     private final Clock clock;
     private final Map<Address, Credential> vouched = new HashMap<>();
@@ -80,7 +93,7 @@ public final class IdealAuthentication {
     public Endpoint wrap(Transport inner, Credential credential) {
         Objects.requireNonNull(inner, "inner");
         Objects.requireNonNull(credential, "credential");
-        CredentialStatus status = trust.verify(credential, clock.nowMillis());
+        CredentialStatus status = verify(credential);
         if (status == CredentialStatus.VALID) {
             vouched.put(inner.localAddress(), credential);
             byVehicle.put(credential.vehicleId(), credential);
@@ -89,6 +102,19 @@ public final class IdealAuthentication {
         }
         incarnations.merge(inner.localAddress(), 1, Integer::sum);
         return new Endpoint(inner, status, incarnations.get(inner.localAddress()));
+    }
+
+    /** {@link TrustAnchor#verify}, with the signature's verification remembered across instances. */
+    private CredentialStatus verify(Credential credential) {
+        long now = clock.nowMillis();
+        if (trust.authority().equals(SIGNATURES_VERIFIED.get(credential))) {
+            return trust.checkTimeAndMission(credential, now);
+        }
+        CredentialStatus status = trust.verify(credential, now);
+        if (status != CredentialStatus.FOREIGN_AUTHORITY && status != CredentialStatus.BAD_SIGNATURE) {
+            SIGNATURES_VERIFIED.put(credential, trust.authority());
+        }
+        return status;
     }
 
     /** Payloads dropped because their sender was not vouched for. */

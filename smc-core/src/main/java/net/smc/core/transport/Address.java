@@ -88,6 +88,9 @@ public record Address(String host, int port) implements Comparable<Address> {
 
     @Override
     public int compareTo(Address other) {
+        if (host.equals(other.host)) {   // the usual case in simulation (one host, a port per node): no parsing
+            return Integer.compare(port, other.port);
+        }
         int byHost = Long.compare(parseIpv4(host), parseIpv4(other.host));
         return byHost != 0 ? byHost : Integer.compare(port, other.port);
     }

@@ -11,9 +11,11 @@ import java.lang.reflect.Modifier;
 import java.math.BigDecimal;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeSet;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * The dispatch table of one kind of PonderTalk object, built once per Java class from its
@@ -189,10 +191,22 @@ public final class ManagedClass {
      */
     static ManagedClass withOperationsOf(Class<?> base, Object extension) {
         String name = displayName(extension.getClass());
-        Map<String, Operation> ops = operations(base, Operation.Kind.INSTANCE, name);
-        operations(extension.getClass(), Operation.Kind.INSTANCE, name).forEach((selector, op) -> ops.put(selector, op.boundTo(extension)));
+        ExtendedTables tables = EXTENDED.computeIfAbsent(List.of(base, extension.getClass()), k -> new ExtendedTables(
+                Map.copyOf(operations(base, Operation.Kind.INSTANCE, name)),
+                Map.copyOf(operations(extension.getClass(), Operation.Kind.INSTANCE, name))));
+        Map<String, Operation> ops = new HashMap<>(tables.base());
+        tables.extension().forEach((selector, op) -> ops.put(selector, op.boundTo(extension)));
         return new ManagedClass(name, extension.getClass(), withCommon(ops), false);
     }
+
+    /**
+     * The operations of a base class and of an extension's class, not yet bound to an extension: read
+     * from the annotations once per pair of classes (a cell makes such a domain for every role it loads).
+     */
+    private record ExtendedTables(Map<String, Operation> base, Map<String, Operation> extension) {
+    }
+
+    private static final Map<List<Class<?>>, ExtendedTables> EXTENDED = new ConcurrentHashMap<>();
 
     private static void put(Map<String, Operation> ops, String selector, Operation op, Class<?> type) {
         if (ops.putIfAbsent(selector, op) != null) {

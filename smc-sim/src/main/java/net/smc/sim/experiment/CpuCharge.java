@@ -1,11 +1,10 @@
 package net.smc.sim.experiment;
 
 import java.nio.charset.StandardCharsets;
+import java.util.BitSet;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.Map;
 import java.util.Objects;
-import java.util.Set;
 import java.util.function.ToIntFunction;
 
 import net.smc.core.message.MessageType;
@@ -37,8 +36,8 @@ public final class CpuCharge implements CpuModel {
 
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
-    private final Map<Address, String> vehicles = new HashMap<>();
-    private final Set<Pair> contacts = new HashSet<>();
+    /** What is known of each address that sent or received: its number, vehicle and contacts. */
+    private final Map<Address, Node> nodes = new HashMap<>();
     private long datagrams;
     private long bytes;
 
@@ -54,13 +53,16 @@ public final class CpuCharge implements CpuModel {
     public long sendMicros(Address at, Address to, byte[] data) {
         datagrams++;
         bytes += data.length;
-        vehicles.computeIfAbsent(at, a -> sender(data));
+        Node node = node(at);
+        if (node.vehicle == null) {
+            node.vehicle = sender(data);
+        }
         double ns = codec(data.length);
         if (to == null) {
             ns += costs.signNanos();
         } else {
             ns += mac(data.length);
-            if (contacts.add(pair(at, to))) {
+            if (node.firstContact(node(to))) {
                 ns += costs.signNanos() + costs.agreeNanos();
             }
         }
@@ -70,14 +72,15 @@ public final class CpuCharge implements CpuModel {
     @Override
     public long receiveMicros(Address at, Address from, byte[] data, boolean broadcast) {
         double ns = codec(data.length) + (broadcast ? costs.verifyNanos() : mac(data.length));
-        if (contacts.add(pair(at, from))) {
+        Node node = node(at);
+        if (node.firstContact(node(from))) {
             ns += costs.verifyNanos() + costs.agreeNanos();
         }
         int type = type(data);
         if (type == MessageType.POLICY_REPLY.code()) {
             ns += costs.loadNanosPerByte() * data.length;
         } else if (type == MessageType.DISCOVERY_REPLY.code()) {
-            String vehicle = vehicles.get(at);
+            String vehicle = node.vehicle;
             ns += costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle));
         }
         return micros(ns);
@@ -123,11 +126,34 @@ public final class CpuCharge implements CpuModel {
                 ? new String(data, SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
     }
 
-    private record Pair(Address at, Address other) {
+    private Node node(Address address) {
+        Node n = nodes.get(address);
+        if (n == null) {
+            n = new Node(nodes.size());
+            nodes.put(address, n);
+        }
+        return n;
     }
 
-    private static Pair pair(Address at, Address other) {
-        return new Pair(at, other);
+    /** One address: a number of its own, the vehicle that sends from it (once it sent), and whom it has met. */
+    private static final class Node {
+        final int number;
+        /** The numbers of the nodes this one has sent to or received from. */
+        final BitSet contacts = new BitSet();
+        String vehicle;
+
+        Node(int number) {
+            this.number = number;
+        }
+
+        /** Records a contact with {@code other}; whether it is the first. */
+        boolean firstContact(Node other) {
+            if (contacts.get(other.number)) {
+                return false;
+            }
+            contacts.set(other.number);
+            return true;
+        }
     }
 
     private static long micros(double nanos) {

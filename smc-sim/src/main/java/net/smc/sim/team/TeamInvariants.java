@@ -1,8 +1,10 @@
 package net.smc.sim.team;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -54,6 +56,8 @@ public final class TeamInvariants {
     private final Map<String, Long> danglingSince = new HashMap<>();
     /** Each vehicle's capability description: made once, a vehicle's kit never changes. */
     private final Map<String, CapabilityDescription> descriptions = new HashMap<>();
+    /** The roles each vehicle's description has been found to meet the requirement of (both fixed). */
+    private final Map<String, Set<String>> meets = new HashMap<>();
     private long checks;
 
     TeamInvariants(TeamSimulation sim, long mergeBoundMillis) {
@@ -84,17 +88,9 @@ public final class TeamInvariants {
         List<Cell> cells = sim.cells();
         Map<String, Cell> byId = new HashMap<>();
         cells.forEach(c -> byId.put(c.vehicle(), c));
-        for (Cell c : cells) {
-            Set<String> seen = new HashSet<>();
-            Cell at = c;
-            while (at != null && at.parent().isPresent()) {
-                if (!seen.add(at.vehicle())) {
-                    fail("the parent relation has a cycle through " + seen);
-                }
-                at = byId.get(at.parent().get());
-            }
-        }
-        Map<String, List<Cell>> teams = teams(cells, byId);
+        checkCycles(cells, byId);
+        Map<String, Set<String>> listed = new HashMap<>();   // each parent's children, for the whole check
+        Map<String, List<Cell>> teams = teams(cells, byId, listed);
         Mission mission = sim.mission();
         for (Map.Entry<String, List<Cell>> team : teams.entrySet()) {
             Map<Seat, String> holders = new HashMap<>();
@@ -110,17 +106,58 @@ public final class TeamInvariants {
                     if (s.slot() >= optimal(mission, s.role())) {
                         fail(c.vehicle() + " holds " + s + " beyond the optimal cardinality of " + s.role());
                     }
+                    Set<String> met = meets.computeIfAbsent(c.vehicle(), id -> new HashSet<>());
+                    if (met.contains(s.role())) {
+                        continue;
+                    }
                     MissionRole role = mission.role(s.role()).orElseThrow();
-                    if (!role.requirement().isMetBy(description)) {
+                    if (role.requirement().isMetBy(description)) {
+                        met.add(s.role());
+                    } else {
                         fail(c.vehicle() + " holds " + s + " but lacks " + role.requirement().missingFrom(description)
                                 .describe());
                     }
                 }
             }
         }
-        checkDangling(cells, byId);
+        checkDangling(cells, byId, listed);
         checkRogues(cells);
         checkCommanders();
+    }
+
+    /**
+     * Fails when the parent relation has a cycle. A walk up the parents from a cell that meets no
+     * cell twice takes at most one step per cell, so only a walk longer than that can have met one:
+     * then the walk is made again, remembering the cells met, to name them. A walk that reaches a
+     * cell an earlier walk passed through ends there: from that cell on, the way up is known to end.
+     */
+    private void checkCycles(List<Cell> cells, Map<String, Cell> byId) {
+        Set<Cell> ending = Collections.newSetFromMap(new IdentityHashMap<>());
+        List<Cell> walked = new ArrayList<>();
+        for (Cell c : cells) {
+            int steps = 0;
+            Cell at = c;
+            while (at != null && !ending.contains(at) && at.parent().isPresent()) {
+                if (++steps > cells.size()) {
+                    nameCycle(c, byId);
+                }
+                walked.add(at);
+                at = byId.get(at.parent().get());
+            }
+            ending.addAll(walked);
+            walked.clear();
+        }
+    }
+
+    private void nameCycle(Cell from, Map<String, Cell> byId) {
+        Set<String> seen = new HashSet<>();
+        Cell at = from;
+        while (at != null && at.parent().isPresent()) {
+            if (!seen.add(at.vehicle())) {
+                fail("the parent relation has a cycle through " + seen);
+            }
+            at = byId.get(at.parent().get());
+        }
     }
 
     private static int optimal(Mission mission, String role) {
@@ -129,34 +166,72 @@ public final class TeamInvariants {
 
     /** Attached cells by the acting commander they hang from. */
     static Map<String, List<Cell>> teams(List<Cell> cells, Map<String, Cell> byId) {
+        return teams(cells, byId, new HashMap<>());
+    }
+
+    /** As {@link #teams(List, Map)}, with {@code listed} the parents' child lists known so far in this check. */
+    private static Map<String, List<Cell>> teams(List<Cell> cells, Map<String, Cell> byId,
+                                                 Map<String, Set<String>> listed) {
         Map<String, List<Cell>> teams = new TreeMap<>();
-        Map<String, Set<String>> listed = new HashMap<>();
+        Map<Cell, Walk> walks = new IdentityHashMap<>();
         for (Cell c : cells) {
-            root(c, byId, listed).ifPresent(r -> teams.computeIfAbsent(r, k -> new ArrayList<>()).add(c));
+            Walk w = walk(c, byId, listed, walks);
+            if (w.steps() < ROOT_WALK_LIMIT && w.commander() != null) {
+                teams.computeIfAbsent(w.commander(), k -> new ArrayList<>()).add(c);
+            }
         }
         return teams;
     }
 
+    /** Steps up from a cell after which its walk to a commander is given up: it is not attached. */
+    private static final int ROOT_WALK_LIMIT = 64;
+
     /**
-     * The acting commander a cell is attached to, if it is attached: every cell on the way up holds
-     * a live lease (not suspended) from a parent that lists it as a child.
+     * Where a cell's walk up ends: at the acting commander {@code commander}, or nowhere (null), after
+     * {@code steps} steps up; {@value #ROOT_WALK_LIMIT} or more steps: not within the limit.
      */
-    private static Optional<String> root(Cell c, Map<String, Cell> byId, Map<String, Set<String>> listed) {
+    private record Walk(String commander, int steps) {
+    }
+
+    private static final Walk DETACHED = new Walk(null, 0);
+    private static final Walk UNENDING = new Walk(null, ROOT_WALK_LIMIT);
+
+    /**
+     * The walk up from {@code c} to the acting commander it is attached to: every cell on the way up
+     * holds a live lease (not suspended) from a parent that lists it as a child. A cell is attached
+     * when the walk ends at a commander within {@value #ROOT_WALK_LIMIT} steps. Every cell on the way
+     * is remembered in {@code walks}, so that a check walks each link once, not once per cell below it.
+     */
+    private static Walk walk(Cell c, Map<String, Cell> byId, Map<String, Set<String>> listed, Map<Cell, Walk> walks) {
+        List<Cell> below = new ArrayList<>();
         Cell at = c;
-        for (int depth = 0; depth < 64 && at != null; depth++) {
+        Walk end;
+        while (true) {
+            Walk known = walks.get(at);
+            if (known != null) {
+                end = known;   // walked before; or met again on this walk, which then never ends
+                break;
+            }
             if (at.isActingCommander()) {
-                return Optional.of(at.vehicle());
+                end = new Walk(at.vehicle(), 0);
+                walks.put(at, end);
+                break;
             }
-            if (at.isSuspended() || at.parent().isEmpty()) {
-                return Optional.empty();
-            }
-            Cell parent = byId.get(at.parent().get());
+            Cell parent = at.isSuspended() || at.parent().isEmpty() ? null : byId.get(at.parent().get());
             if (parent == null || !lists(parent, at.vehicle(), listed)) {
-                return Optional.empty();
+                end = DETACHED;
+                walks.put(at, end);
+                break;
             }
+            walks.put(at, UNENDING);   // on the way: until the end is known
+            below.add(at);
             at = parent;
         }
-        return Optional.empty();
+        for (int i = below.size() - 1; i >= 0; i--) {
+            end = end.steps() + 1 >= ROOT_WALK_LIMIT ? UNENDING : new Walk(end.commander(), end.steps() + 1);
+            walks.put(below.get(i), end);
+        }
+        return end;
     }
 
     /**
@@ -172,11 +247,10 @@ public final class TeamInvariants {
      * A cell whose parent is gone or no longer lists it (a dropped Leave, a crash) keeps a lease it
      * should not: it must lose it within the lease plus two heartbeats.
      */
-    private void checkDangling(List<Cell> cells, Map<String, Cell> byId) {
+    private void checkDangling(List<Cell> cells, Map<String, Cell> byId, Map<String, Set<String>> listed) {
         long now = sim.nowMillis();
         long bound = net.smc.core.cell.Timing.of(sim.mission()).leaseMillis() + 2 * number("comTimeout");
         Set<String> dangling = new HashSet<>();
-        Map<String, Set<String>> listed = new HashMap<>();
         for (Cell c : cells) {
             if (c.isActingCommander() || c.isSuspended() || c.parent().isEmpty()) {
                 continue;

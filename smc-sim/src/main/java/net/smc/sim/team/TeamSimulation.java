@@ -82,7 +82,8 @@ public final class TeamSimulation implements CellTeam {
     private final IdealAuthentication ideal;
     private final TrustAnchor trust;
     private final Map<String, Node> nodes = new LinkedHashMap<>();
-    private final Deque<String> trace = new ArrayDeque<>();
+    /** The last {@link #TRACE_LINES} events, made into lines only when the trace is read. */
+    private final Deque<CellEvent> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
     private final Function<String, TaskProvider> tasks;
     private final net.smc.policy.api.AuthMode auth;
@@ -419,7 +420,7 @@ public final class TeamSimulation implements CellTeam {
 
     /** The end of the trace, oldest first. */
     public List<String> trace() {
-        return List.copyOf(trace);
+        return trace.stream().map(CellEvent::toString).toList();
     }
 
     /** Records a line in the trace (the harness's own fault actions use it too) and passes the event on. */
@@ -428,7 +429,7 @@ public final class TeamSimulation implements CellTeam {
         if (trace.size() == TRACE_LINES) {
             trace.removeFirst();
         }
-        trace.addLast(e.toString());
+        trace.addLast(e);
     }
 
     private Node node(String vehicle) {

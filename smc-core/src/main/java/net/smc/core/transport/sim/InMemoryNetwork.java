@@ -37,6 +37,10 @@ public final class InMemoryNetwork {
     private final Links links;
     private final Partitions partitions = new Partitions();
     private final NavigableMap<Address, SimTransport> attached = new TreeMap<>();
+    /** The same as {@link #attached}, for look-ups by hash (a copy's arrival) rather than by order. */
+    private final Map<Address, SimTransport> attachedByHash = new HashMap<>();
+    /** {@link #attached}'s addresses in order, for broadcasts; null when attaches or detaches made it stale. */
+    private Address[] broadcastOrder;
     private final Set<Address> crashed = new HashSet<>();                 // looked up only
     private final Map<Address, Counters> counters = new HashMap<>();      // looked up, or summed
     private final List<NetworkObserver> observers = new ArrayList<>();
@@ -70,8 +74,10 @@ public final class InMemoryNetwork {
             throw new IllegalArgumentException("address " + address + " is already attached; close or crash its node first");
         }
         crashed.remove(address);
-        SimTransport transport = new SimTransport(this, address);
+        SimTransport transport = new SimTransport(this, address, countersOf(address));
         attached.put(address, transport);
+        attachedByHash.put(address, transport);
+        broadcastOrder = null;
         return transport;
     }
 
@@ -89,6 +95,8 @@ public final class InMemoryNetwork {
         if (transport == null) {
             throw new IllegalArgumentException("no node is attached at " + address + "; only an attached node can crash");
         }
+        attachedByHash.remove(address);
+        broadcastOrder = null;
         transport.crash();
         crashed.add(address);
     }
@@ -206,15 +214,19 @@ public final class InMemoryNetwork {
     // ---- called by SimTransport ----
 
     void send(SimTransport sender, Address to, byte[] data) {
-        countersOf(sender.localAddress()).sent++;
+        sender.counters.sent++;
         route(sender, to, data, departureDelay(sender, to, data), false);
     }
 
     void broadcast(SimTransport sender, byte[] data) {
-        countersOf(sender.localAddress()).sent++;
+        sender.counters.sent++;
         long delay = departureDelay(sender, null, data);
-        for (Address to : attached.keySet()) {   // route never attaches or detaches
-            if (!to.equals(sender.localAddress())) {
+        if (broadcastOrder == null) {
+            broadcastOrder = attached.keySet().toArray(new Address[0]);
+        }
+        Address self = sender.localAddress();
+        for (Address to : broadcastOrder) {   // route never attaches or detaches
+            if (!to.equals(self)) {
                 route(sender, to, data, delay, true);
             }
         }
@@ -226,7 +238,7 @@ public final class InMemoryNetwork {
             return 0;
         }
         Address from = sender.localAddress();
-        NodeCpu node = cpuOf(from);
+        NodeCpu node = sender.cpu != null ? sender.cpu : (sender.cpu = cpuOf(from));
         long now = scheduler.nowMillis() * 1_000;
         long ready = node.charge(now, cpu.sendMicros(from, to, data));
         long out = node.transmit(ready, data.length, bytesPerSecond);
@@ -234,14 +246,17 @@ public final class InMemoryNetwork {
     }
 
     void detach(SimTransport transport) {
-        attached.remove(transport.localAddress(), transport);
+        if (attached.remove(transport.localAddress(), transport)) {
+            attachedByHash.remove(transport.localAddress());
+            broadcastOrder = null;
+        }
     }
 
     // ---- one copy's fate ----
 
     private void route(SimTransport sender, Address to, byte[] data, long departureMillis, boolean broadcast) {
         Address from = sender.localAddress();
-        countersOf(from).copies++;
+        sender.counters.copies++;
         if (sender.isCrashed()) {
             drop(from, to, DropReason.SENDER_DOWN, data, from);
             return;
@@ -261,7 +276,7 @@ public final class InMemoryNetwork {
         }
         scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast);
         if (links.duplicated(profile)) {
-            countersOf(from).copies++;
+            sender.counters.copies++;
             countersOf(to).duplicated++;
             scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast);
         }
@@ -318,13 +333,13 @@ public final class InMemoryNetwork {
     }
 
     private void arrive(Address from, Address to, byte[] data) {
-        SimTransport destination = attached.get(to);
+        SimTransport destination = attachedByHash.get(to);
         if (destination == null) {
             drop(from, to, DropReason.RECEIVER_DOWN, data, to);
         } else if (!destination.hasReceiver()) {
             drop(from, to, DropReason.NO_RECEIVER, data, to);
         } else {
-            countersOf(to).delivered++;
+            destination.counters.delivered++;
             byte[] copy = data.clone();   // each copy is the receiver's own to keep or change
             for (NetworkObserver o : observers) {
                 o.delivered(scheduler.nowMillis(), from, to, copy);

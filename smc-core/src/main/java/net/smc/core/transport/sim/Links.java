@@ -39,7 +39,7 @@ final class Links {
     }
 
     LinkProfile profile(Address from, Address to) {
-        return overrides.getOrDefault(new Link(from, to), defaultProfile);
+        return overrides.isEmpty() ? defaultProfile : overrides.getOrDefault(new Link(from, to), defaultProfile);
     }
 
     boolean lost(LinkProfile p) {

@@ -2,12 +2,12 @@ package net.smc.core.transport.sim;
 
 import net.smc.core.transport.Cancellable;
 
-/** A task waiting in the {@link SimulationScheduler}'s queue, ordered by due time, then by sequence. */
-final class SimTask implements Cancellable, Comparable<SimTask> {
+/** A task waiting in the {@link SimulationScheduler}'s queue ({@link TaskHeap}), ordered by due time, then by sequence. */
+final class SimTask implements Cancellable {
     private enum State { WAITING, RAN, CANCELLED }
 
     final long due;
-    private final long sequence;
+    final long sequence;
     private final SimulationScheduler owner;
     private Runnable task;
     private State state = State.WAITING;
@@ -39,11 +39,5 @@ final class SimTask implements Cancellable, Comparable<SimTask> {
         task = null;
         owner.cancelled();
         return true;
-    }
-
-    @Override
-    public int compareTo(SimTask other) {
-        int byTime = Long.compare(due, other.due);
-        return byTime != 0 ? byTime : Long.compare(sequence, other.sequence);
     }
 }

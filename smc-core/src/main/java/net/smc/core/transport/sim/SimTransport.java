@@ -17,12 +17,17 @@ final class SimTransport implements Transport {
 
     private final InMemoryNetwork network;
     private final Address address;
+    /** The network's counters of this address (kept across the node's lives), held here to save a look-up per datagram. */
+    final Counters counters;
+    /** The network's CPU of this address under a CPU model, once looked up; null before. */
+    NodeCpu cpu;
     private Receiver receiver;
     private State state = State.OPEN;
 
-    SimTransport(InMemoryNetwork network, Address address) {
+    SimTransport(InMemoryNetwork network, Address address, Counters counters) {
         this.network = network;
         this.address = address;
+        this.counters = counters;
     }
 
     @Override

@@ -1,7 +1,6 @@
 package net.smc.core.transport.sim;
 
 import java.util.Objects;
-import java.util.PriorityQueue;
 import java.util.function.BooleanSupplier;
 
 import net.smc.core.transport.Cancellable;
@@ -25,7 +24,7 @@ public final class SimulationScheduler implements Clock, Scheduler {
     /** Below this many queued tasks, cancelled ones are left for the queue to drop as they come due. */
     private static final int PURGE_THRESHOLD = 1_024;
 
-    private final PriorityQueue<SimTask> queue = new PriorityQueue<>();
+    private final TaskHeap queue = new TaskHeap();
     private long nowMillis;
     private long nextSequence;
     private int cancelledInQueue;
@@ -154,7 +153,7 @@ public final class SimulationScheduler implements Clock, Scheduler {
     void cancelled() {
         cancelledInQueue++;
         if (queue.size() > PURGE_THRESHOLD && cancelledInQueue > queue.size() / 2) {
-            queue.removeIf(SimTask::isCancelled);
+            queue.removeCancelled();
             cancelledInQueue = 0;
         }
     }
