@@ -13,6 +13,7 @@ import net.smc.sim.hardware.Sighting;
 import net.smc.sim.map.OccupancyGrid;
 import net.smc.sim.map.PathPlanner;
 import net.smc.sim.map.Point;
+import net.smc.sim.map.Zone;
 
 /**
  * Frontier exploration: while it runs it fills the robot's occupancy grid from the infrared ring
@@ -30,10 +31,12 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private final Set<Integer> reportedObstacles = new HashSet<>();
     private final Set<Integer> unreachable = new HashSet<>();
     private final Set<String> sighted = new HashSet<>();
+    private final List<Zone> zones = new java.util.ArrayList<>();
     private boolean exploring;
     private int target = -1;
     private double reported;
     private double backOffUntil = -1;
+    private int sharedKnown = -1;
 
     public Explorer(TaskContext context) {
         this(context.hardware(), context.map());
@@ -63,6 +66,39 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         target = -1;
         follower.clear();
         hardware.drive().stop();
+    }
+
+    @Override
+    public void avoid(double x, double y, double radius) {
+        StateValues.finite("Explorer avoid x", x);
+        StateValues.finite("Explorer avoid y", y);
+        if (!(radius > 0) || !Double.isFinite(radius)) {
+            throw new IllegalArgumentException("Explorer avoid: radius " + radius + " must be a positive number of metres");
+        }
+        zones.add(new Zone(x, y, radius));
+        follower.clear();
+        target = -1;
+    }
+
+    /** The zones it keeps out of. */
+    public List<Zone> zones() {
+        return List.copyOf(zones);
+    }
+
+    @Override
+    public void shareMap() {
+        if (map.knownCells() == sharedKnown) {
+            return;
+        }
+        sharedKnown = map.knownCells();
+        @SuppressWarnings("unchecked")
+        List<String> rows = (List<String>) map.toState().get("cells");
+        mapUpdate("mapUpdate", hardware.id(), rows);
+    }
+
+    @Override
+    public void mapUpdate(String name, String uav, List<String> cells) {
+        raise("mapUpdate", name, uav, cells);
     }
 
     @Override
@@ -147,7 +183,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 return;
             }
             Point p = map.centre(next.get() % map.cols(), next.get() / map.cols());
-            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, List.of(), 0);
+            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
             if (path.isPresent()) {
                 target = next.get();
                 follower.follow(path.get(), map.resolution());
@@ -169,7 +205,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     /** Breadth-first search over cells open to the robot, from its own cell. */
     private Optional<Integer> nearestFrontier(Pose pose) {
         int cols = map.cols();
-        boolean[] closed = planner.closedCells(map, List.of(), 0);
+        boolean[] closed = planner.closedCells(map, zones, 0);
         int startC = Math.max(0, Math.min(cols - 1, map.col(pose.x())));
         int startR = Math.max(0, Math.min(map.rows() - 1, map.row(pose.y())));
         int start = startC + startR * cols;

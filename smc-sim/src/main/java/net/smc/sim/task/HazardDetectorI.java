@@ -14,6 +14,19 @@ public interface HazardDetectorI {
     @Op("threshold:")
     void threshold(double strength);
 
+    /**
+     * Goes to confirm a suspected hazard near (x, y): drives towards it (keeping out of the hazards
+     * it has confirmed) until the sensor reads the threshold, or it is there, or no way is left.
+     * Points asked for while one is inspected are queued, nearest first; one within a metre of a
+     * queued point or a confirmed hazard is ignored.
+     */
+    @Op("inspect:y:")
+    void inspect(double x, double y);
+
+    /** Whether it is inspecting or has points queued. */
+    @Op("isInspecting")
+    boolean isInspecting();
+
     /** The hazards reported so far, each {@code [tag, kind, x, y]}. */
     @Op("hazards")
     List<List<Object>> hazards();
@@ -26,4 +39,11 @@ public interface HazardDetectorI {
     @TaskEvent
     void hazardDetected(@Attr("name") String name, @Attr("uav") String uav, @Attr("kind") String kind,
                         @Attr("x") double x, @Attr("y") double y);
+
+    /**
+     * An inspection ended: at (x, y), the point asked for, {@code found} tells whether a hazard was
+     * sensed at the threshold on the way or there.
+     */
+    @TaskEvent
+    void inspected(@Attr("x") double x, @Attr("y") double y, @Attr("found") boolean found);
 }
