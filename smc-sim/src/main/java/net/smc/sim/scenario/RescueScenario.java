@@ -123,12 +123,11 @@ public final class RescueScenario {
     private final TeamSimulation team;
     private final WorldTeam world;
     private final Arena.Hazard hazard;
-    private final Timeline timeline = new Timeline();
     private final TrajectoryRecorder tracks = new TrajectoryRecorder(5);
     private final Scene scene = new Scene("Rescue of a wounded soldier (cf. the paper's Fig. 7)");
     private final Map<String, String> roles = new LinkedHashMap<>();
     private final GifRecorder film;
-    private final Consumer<Timeline.Row> printer;
+    private final ScenarioLog log;
     private long firstStop = -1;
     private long reassigned = -1;
     private String firstSurveyor;
@@ -140,7 +139,7 @@ public final class RescueScenario {
     private RescueScenario(Mission mission, PolicyRepository repository, Arena arena, Settings settings,
                            Consumer<Timeline.Row> printer) {
         this.settings = settings;
-        this.printer = printer;
+        this.log = new ScenarioLog(printer);
         this.hazard = arena.hazards().stream().findFirst()
                 .orElseThrow(() -> new IllegalArgumentException("arena '" + arena.name() + "' has no hazard; the rescue needs one"));
         List<SimVehicle> vehicles = List.of(
@@ -189,16 +188,8 @@ public final class RescueScenario {
      */
     public static RescueScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer)
             throws IOException, MissionException, ArenaException {
-        PolicyRepository repository = new PolicyRepository(projectDir.resolve("policies"));
-        Path instance = projectDir.resolve("missions/rescue.instance.xml");
-        Path worldFile = projectDir.resolve("missions/worlds/rescue.xml");
-        for (Path p : List.of(projectDir.resolve("policies"), instance, worldFile)) {
-            if (!Files.exists(p)) {
-                throw new IOException(p + " not found; run from the project's folder (it needs policies/ and missions/)");
-            }
-        }
-        Mission mission = new MissionLoader(repository).load(instance);
-        return new RescueScenario(mission, repository, ArenaReader.read(worldFile), settings, printer);
+        ScenarioFiles files = ScenarioFiles.load(projectDir, "rescue.instance.xml", "rescue.xml");
+        return new RescueScenario(files.mission(), files.repository(), files.arena(), settings, printer);
     }
 
     /** Runs the rescue until assistance is delivered, something goes wrong, or the time limit. */
@@ -366,25 +357,16 @@ public final class RescueScenario {
     }
 
     private void row(long millis, String vehicle, String what, String detail, String step) {
-        timeline.record(millis, vehicle, what, detail, step);
-        List<Timeline.Row> rows = timeline.rows();
-        printer.accept(rows.get(rows.size() - 1));
+        log.row(millis, vehicle, what, detail, step);
     }
 
     /** What each live cell's policies reported as errors (a policy denied, a failed send ...), by vehicle. */
     public Map<String, List<String>> diagnostics() {
-        Map<String, List<String>> out = new LinkedHashMap<>();
-        for (SimVehicle v : team.vehicles()) {
-            Cell c = team.cell(v.id());
-            if (c != null && !c.diagnostics().isEmpty()) {
-                out.put(v.id(), c.diagnostics().stream().map(Object::toString).toList());
-            }
-        }
-        return out;
+        return ScenarioLog.diagnostics(team);
     }
 
     public Timeline timeline() {
-        return timeline;
+        return log.timeline();
     }
 
     public Scene scene() {
@@ -414,8 +396,7 @@ public final class RescueScenario {
 
     /** One timeline row as a line: {@code  12.345 s  r1        STOPPED   (iv) detail}. */
     public static String format(Timeline.Row r) {
-        return String.format(Locale.ROOT, "%8.3f s  %-8s %-14s %-6s %s", r.timeMillis() / 1000.0, r.vehicle(), r.what(),
-                r.step().isEmpty() ? "" : "(" + r.step() + ")", r.detail());
+        return ScenarioLog.format(r);
     }
 
     private static String seconds(long millis) {

@@ -24,6 +24,8 @@ import net.smc.sim.map.Zone;
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
+    /** Seconds of driving without moving 5 cm after which the target is given up. */
+    private static final double STALL_SECONDS = 4;
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
@@ -37,6 +39,9 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private double reported;
     private double backOffUntil = -1;
     private int sharedKnown = -1;
+    private double stallX = Double.NaN;
+    private double stallY;
+    private double stallSince;
 
     public Explorer(TaskContext context) {
         this(context.hardware(), context.map());
@@ -191,15 +196,55 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 unreachable.add(next.get());
             }
         }
-        switch (follower.step()) {
-            case ARRIVED, IDLE -> target = -1;
-            case OBSTRUCTED -> {
+        PathFollower.Status st = follower.step();
+        switch (st) {
+            case ARRIVED, IDLE -> {
+                // Standing on it, the robot saw what it could: a frontier still open from here
+                // (its unknown side hidden from the sensors) is not chosen again.
                 unreachable.add(target);
                 target = -1;
-                backOffUntil = time + 0.5;
             }
-            default -> { }
+            case OBSTRUCTED -> giveUpTarget(time);
+            default -> {
+                if (stalled(time, pose)) {
+                    giveUpTarget(time);
+                }
+            }
         }
+    }
+
+    /** Whether the robot has moved less than 5 cm in the last {@link #STALL_SECONDS} while driving (wedged on a corner, say). */
+    private boolean stalled(double time, Pose pose) {
+        if (Double.isNaN(stallX) || Math.hypot(pose.x() - stallX, pose.y() - stallY) > 0.05) {
+            stallX = pose.x();
+            stallY = pose.y();
+            stallSince = time;
+            return false;
+        }
+        return time - stallSince > STALL_SECONDS;
+    }
+
+    private void giveUpTarget(double time) {
+        unreachable.add(target);
+        target = -1;
+        follower.clear();
+        backOffUntil = time + 0.5;
+        stallX = Double.NaN;
+    }
+
+    /**
+     * Whether an occupied cell touches this one (8-connected): a frontier along a wall mostly
+     * looks into the wall, and chasing it cell by cell costs a trip per cell for nothing.
+     */
+    private boolean besideObstacle(int c, int r) {
+        for (int dr = -1; dr <= 1; dr++) {
+            for (int dc = -1; dc <= 1; dc++) {
+                if ((dr != 0 || dc != 0) && map.inside(c + dc, r + dr) && map.isOccupied(c + dc, r + dr)) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Breadth-first search over cells open to the robot, from its own cell. */
@@ -217,7 +262,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             int cell = queue.poll();
             int c = cell % cols;
             int r = cell / cols;
-            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell)) {
+            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell) && !besideObstacle(c, r)) {
                 return Optional.of(cell);
             }
             int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};

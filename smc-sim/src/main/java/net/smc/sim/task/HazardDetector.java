@@ -25,15 +25,18 @@ import net.smc.sim.map.Point;
 public final class HazardDetector extends RobotTask implements HazardDetectorI, Handover {
     /** How close two points are to count as one suspect, metres. */
     private static final double SAME_POINT = 1.0;
-    /** The radius of the zone kept around a confirmed hazard while driving to another, metres. */
+    /** How far short of a suspected point the detector stops if its sensor has not read the threshold before, metres. */
+    private static final double APPROACH = 0.8;
+    /** The largest radius of the zone kept around a confirmed hazard while driving to another, metres. */
     private static final double CONFIRMED_ZONE = 1.0;
 
     private final Map<String, List<Object>> found = new LinkedHashMap<>();
     private final List<Point> queue = new ArrayList<>();
     private final Navigator navigator;
+    private final OccupancyGrid map;
     private double threshold = 0.5;
     private Point inspecting;
-    private boolean sensedOnTheWay;
+    private int foundBefore;
 
     public HazardDetector(TaskContext context) {
         this(context.hardware(), context.map());
@@ -46,6 +49,7 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
 
     public HazardDetector(RobotHardware hardware, OccupancyGrid map) {
         super(hardware);
+        this.map = map;
         this.navigator = map == null ? null : new Navigator(hardware, map);
         if (navigator != null) {
             navigator.margin(0.2);
@@ -63,6 +67,17 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
             return;
         }
         queue.add(new Point(x, y));
+    }
+
+    @Override
+    public void merge(net.smc.policy.api.ArrayValue cells) {
+        java.util.Objects.requireNonNull(cells, "cells");
+        if (map == null) {
+            throw new IllegalStateException("HazardDetector of " + hardware.id() + " has no map to merge into");
+        }
+        Map<String, Object> state = map.toState();
+        state.put("cells", cells.items());
+        map.fillUnknown(OccupancyGrid.fromState(state));
     }
 
     @Override
@@ -123,9 +138,7 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
                 sensed = true;
                 if (!found.containsKey(r.tag())) {
                     found.put(r.tag(), List.of(r.tag(), r.kind(), pose.x(), pose.y()));
-                    if (navigator != null) {
-                        navigator.avoid(pose.x(), pose.y(), CONFIRMED_ZONE);
-                    }
+                    keepAway(pose);
                     hazardDetected("hazardDetected", hardware.id(), r.kind(), pose.x(), pose.y());
                 }
             }
@@ -137,24 +150,55 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
 
     /** Works through the queue: the nearest point first, until the sensor reads the threshold or it is there. */
     private void drive(double time, double dt, Pose pose, boolean sensed) {
+        if (inspecting == null) {
+            queue.removeIf(p -> nearConfirmed(p.x(), p.y()));
+        }
         if (inspecting == null && !queue.isEmpty()) {
             queue.sort(java.util.Comparator.comparingDouble(p -> p.distanceTo(pose.x(), pose.y())));
             inspecting = queue.remove(0);
-            sensedOnTheWay = false;
-            navigator.goTo(inspecting.x(), inspecting.y());
+            foundBefore = found.size();
+            Point approach = approach(inspecting, pose);
+            navigator.goTo(approach.x(), approach.y());
         }
         if (inspecting == null) {
             return;
         }
-        if (sensed && inspecting.distanceTo(pose.x(), pose.y()) < 2.5) {
+        if (found.size() > foundBefore || sensed && inspecting.distanceTo(pose.x(), pose.y()) < 2.5) {
             finish(true);
             return;
         }
-        sensedOnTheWay |= sensed;
         navigator.step(time, dt);
         if (!navigator.isMoving()) {
-            finish(sensedOnTheWay || nearConfirmed(inspecting.x(), inspecting.y()));
+            finish(false);
         }
+    }
+
+    /**
+     * After confirming a hazard while inspecting a point: keep out of a circle about that point
+     * from now on, as large as leaves the robot, where it stands, outside it and the margin.
+     */
+    private void keepAway(Pose pose) {
+        if (navigator == null || inspecting == null) {
+            return;
+        }
+        double d = inspecting.distanceTo(pose.x(), pose.y());
+        double radius = d - navigator.margin() - 0.25;
+        if (radius > 0.1) {
+            navigator.avoid(inspecting.x(), inspecting.y(), Math.min(radius, CONFIRMED_ZONE));
+        }
+    }
+
+    /**
+     * Where to drive to inspect a point: {@link #APPROACH} short of it on the robot's side (the
+     * point itself is where the hazard's body may stand, a cell the planner keeps closed).
+     */
+    private Point approach(Point p, Pose pose) {
+        double d = p.distanceTo(pose.x(), pose.y());
+        if (d <= APPROACH) {
+            return new Point(pose.x(), pose.y());
+        }
+        double f = APPROACH / d;
+        return new Point(p.x() + (pose.x() - p.x()) * f, p.y() + (pose.y() - p.y()) * f);
     }
 
     private void finish(boolean sensed) {

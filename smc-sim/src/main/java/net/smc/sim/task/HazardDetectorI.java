@@ -2,6 +2,7 @@ package net.smc.sim.task;
 
 import java.util.List;
 import net.smc.core.task.Attr;
+import net.smc.policy.api.ArrayValue;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
 import net.smc.policy.api.Op;
@@ -22,6 +23,14 @@ public interface HazardDetectorI {
      */
     @Op("inspect:y:")
     void inspect(double x, double y);
+
+    /**
+     * Fills the unknown cells of the robot's own map, on which it plans its way to the points to
+     * inspect, from another's, given as its rows ({@code mapUpdate}'s {@code cells}); what its own
+     * sensors saw stands.
+     */
+    @Op("merge:")
+    void merge(ArrayValue cells);
 
     /** Whether it is inspecting or has points queued. */
     @Op("isInspecting")
