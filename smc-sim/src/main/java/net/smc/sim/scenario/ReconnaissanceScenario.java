@@ -434,8 +434,8 @@ public final class ReconnaissanceScenario {
 
     private void cellEvent(CellEvent e) {
         switch (e.kind()) {
-            case DISCOVERING, ASSIGNING, HOSTING -> {
-                return;   // protocol detail: not on the timeline
+            case DISCOVERING, ASSIGNING, HOSTING, PUBLISHED, DELIVERED -> {
+                return;   // protocol detail (maps go out every few seconds): not on the timeline
             }
             default -> log.row(e.timeMillis(), e.vehicle(), e.kind().name(), e.detail());
         }
