@@ -1,7 +1,6 @@
 package net.smc.sim.scenario;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -16,7 +15,6 @@ import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionException;
-import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.PolicyRepository;
@@ -34,7 +32,6 @@ import net.smc.sim.team.TeamSimulation;
 import net.smc.sim.team.WorldTeam;
 import net.smc.sim.arena.Arena;
 import net.smc.sim.arena.ArenaException;
-import net.smc.sim.arena.ArenaReader;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.WorldStepListener;
 
