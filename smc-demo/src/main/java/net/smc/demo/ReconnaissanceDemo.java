@@ -32,8 +32,8 @@ final class ReconnaissanceDemo {
     /** Picture size, pixels. */
     private static final int WIDTH = 1200;
     private static final int HEIGHT = 860;
-    /** A frame every 5 s of mission time (250 steps of 20 ms), at most 200 frames. */
-    private static final GifRecorder.Settings FILM = new GifRecorder.Settings(250, 200, 560, 80);
+    /** A frame every 10 s of mission time (500 steps of 20 ms), at most 100 frames: each frame costs a render and its colours. */
+    private static final GifRecorder.Settings FILM = new GifRecorder.Settings(500, 100, 560, 120);
 
     private final Io io;
 
@@ -49,13 +49,12 @@ final class ReconnaissanceDemo {
     int run(long seed, double loss, long limitMillis, boolean gui, double speed, Path dir) throws IOException, InterruptedException,
             MissionException, ArenaException {
         ReconnaissanceScenario.Settings settings = ReconnaissanceScenario.Settings.of(seed).withLoss(loss)
-                .withSecurity(TeamSimulation.Security.IDEAL).withFilm(FILM);
+                .withSecurity(TeamSimulation.Security.REAL).withFilm(FILM);
         if (limitMillis > 0) {
             settings = settings.withLimit(limitMillis);
         }
         io.stdout().println("reconnaissance of the house (section II-A), seed " + seed + ", loss " + loss
-                + ", authenticated cells over the world's radio (credentials checked once; signing every datagram"
-                + " of nine cells would slow it about 2.5 times)");
+                + ", signed traffic over the world's radio");
         ReconnaissanceScenario recon = ReconnaissanceScenario.load(io.workingDir(), settings, this::print);
         long wall = System.nanoTime();
         recon.start();

@@ -12,18 +12,24 @@ import net.smc.sim.map.Point;
  * Fills an occupancy grid from the infrared ring and the odometry. The sensors read from the
  * body's edge; the body's radius is taken as half the wheel base (the wheels sit at its edge).
  * Each beam marks the cells it crosses free and, when it hits something, its end occupied. Between
- * two neighbouring beams: when both hit something at about the same distance (within
- * {@link #SAME_SURFACE}), one surface is taken to run between their ends, and rays in between end
- * on it; otherwise the wedge is marked free up to the nearer of the two readings (nothing that
- * both beams pass is taken to hide between them).
+ * two neighbouring beams: when both hit something and their two hit points lie within
+ * {@link #SAME_SURFACE} of each other (closer than a robot is wide, so no way through is closed),
+ * one surface is taken to run between them, and rays in between end on it; otherwise the wedge is
+ * marked free up to the nearer of the two readings (nothing that both beams pass is taken to hide
+ * between them).
  */
 final class RangeMapper {
-    /** How close two neighbouring beams' readings must be for one surface to be taken to join their ends, m. */
-    static final double SAME_SURFACE = 0.4;
+    /** How close two neighbouring beams' hit points must be for one surface to be taken to join them, m. */
+    static final double SAME_SURFACE = 0.3;
     /** How far short of a hit a ray marks nothing free, m. */
     static final double HIT_SHADOW = 0.35;
 
     private RangeMapper() {
+    }
+
+    /** The distance between the ends of two rays of lengths {@code a} and {@code b}, {@code angle} apart. */
+    private static double gap(double a, double b, double angle) {
+        return Math.sqrt(Math.max(0, a * a + b * b - 2 * a * b * Math.cos(angle)));
     }
 
     /**
@@ -63,7 +69,7 @@ final class RangeMapper {
             double span = Math.IEEEremainder(ir.angle(j) - a0, 2 * Math.PI);
             double di = Math.max(0, Math.min(range, readings[i]));
             double dj = Math.max(0, Math.min(range, readings[j]));
-            boolean surface = di < range - 1e-6 && dj < range - 1e-6 && Math.abs(di - dj) <= SAME_SURFACE;
+            boolean surface = di < range - 1e-6 && dj < range - 1e-6 && gap(body + di, body + dj, span) <= SAME_SURFACE;
             double near = Math.min(di, dj);
             int between = (int) Math.ceil(Math.abs(span) * (body + Math.max(di, dj)) / map.resolution());
             for (int k = 1; k < between; k++) {
