@@ -25,12 +25,13 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code smc demo [rescue|reconnaissance] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P] [--limit S]}:
- * runs the paper's rescue (section IV-C) with cells and policies in the simulated world, prints its
- * timeline as it happens, and writes {@code rescue.png} (in the spirit of Fig. 7),
- * {@code rescue.gif} and {@code rescue-timeline.csv} into DIR. Exit 0 when assistance reached the
- * soldier, 1 (with the reason) when not, 2 for a usage error. {@code reconnaissance} runs the
- * reconnaissance of section II-A instead ({@link ReconnaissanceDemo}).
+ * {@code smc demo [rescue|reconnaissance] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P] [--limit S]
+ * [--transport sim|udp]}: runs the paper's rescue (section IV-C) with cells and policies in the
+ * simulated world, prints its timeline as it happens, and writes {@code rescue.png} (in the spirit
+ * of Fig. 7), {@code rescue.gif} and {@code rescue-timeline.csv} into DIR. Exit 0 when assistance
+ * reached the soldier, 1 (with the reason) when not, 2 for a usage error. {@code --transport udp}
+ * runs it on real UDP ({@link UdpRescueDemo}). {@code reconnaissance} runs the reconnaissance of
+ * section II-A instead ({@link ReconnaissanceDemo}).
  */
 @Command(name = "demo", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "Run a scenario of the paper in the simulated world: its timeline, a picture, a film, a CSV.")
@@ -53,7 +54,8 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--gui", description = "show the world in a window while it runs (headless without a display)")
     boolean gui;
 
-    @Option(names = "--speed", defaultValue = "1", paramLabel = "X", description = "with --gui: mission seconds per wall second (default 1)")
+    @Option(names = "--speed", defaultValue = "1", paramLabel = "X",
+            description = "with --gui, or with --transport udp: mission seconds per wall second (default 1)")
     double speed;
 
     @Option(names = "--loss", defaultValue = "0", paramLabel = "P", description = "extra datagram loss, 0 to below 1 (default 0)")
@@ -63,7 +65,9 @@ final class DemoCommand implements Callable<Integer> {
             description = "mission time after which the run gives up (default 180 for the rescue, 900 for the reconnaissance)")
     Double limit;
 
-    @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp", description = "sim (default); udp is not available yet")
+    @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp",
+            description = "sim: the world's simulated radio, on a virtual clock (default); udp: every cell on its own UDP "
+                    + "sockets on loopback, the world stepped in real time")
     String transport;
 
     DemoCommand(Io io) {
@@ -75,10 +79,18 @@ final class DemoCommand implements Callable<Integer> {
         if (!scenario.equals("rescue") && !scenario.equals("reconnaissance")) {
             throw new ParameterException(spec.commandLine(), "unknown scenario '" + scenario + "'; scenarios: rescue, reconnaissance");
         }
-        if (!transport.equals("sim")) {
-            throw new ParameterException(spec.commandLine(), transport.equals("udp")
-                    ? "--transport udp is not available yet for the demo; use sim"
-                    : "--transport '" + transport + "' is unknown; use sim or udp");
+        if (!transport.equals("sim") && !transport.equals("udp")) {
+            throw new ParameterException(spec.commandLine(), "--transport '" + transport + "' is unknown; use sim or udp");
+        }
+        if (transport.equals("udp") && scenario.equals("reconnaissance")) {
+            throw new ParameterException(spec.commandLine(), "--transport udp is available for the rescue only; run the reconnaissance with sim");
+        }
+        if (transport.equals("udp") && gui) {
+            throw new ParameterException(spec.commandLine(), "--gui is for --transport sim only; with udp the run writes its files");
+        }
+        if (transport.equals("udp") && speed > 100) {
+            throw new ParameterException(spec.commandLine(), "--speed " + speed + " with --transport udp must be at most 100"
+                    + " (the cells' timers and the world run on the wall clock times the speed)");
         }
         if (!(loss >= 0 && loss < 1)) {
             throw new ParameterException(spec.commandLine(), "--loss " + loss + " is out of range; it must be 0 or more and below 1");
@@ -99,8 +111,11 @@ final class DemoCommand implements Callable<Integer> {
                 return 1;
             }
         }
-        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss)
-                .withLimit(Math.round((limit == null ? 180 : limit) * 1000))
+        long limitMillis = Math.round((limit == null ? 180 : limit) * 1000);
+        if (transport.equals("udp")) {
+            return new UdpRescueDemo(io).run(seed, dir, loss, limitMillis, speed);
+        }
+        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss).withLimit(limitMillis)
                 .withSecurity(TeamSimulation.Security.REAL).withFilm(GifRecorder.Settings.defaults());
         io.stdout().println("rescue of a wounded soldier (section IV-C), seed " + seed + ", loss " + loss
                 + ", signed traffic over the world's radio");

@@ -24,6 +24,7 @@ import net.smc.sim.experiment.SetupResult;
 import net.smc.sim.experiment.SetupTimeCsv;
 import net.smc.sim.experiment.SetupTimeRun;
 import net.smc.sim.experiment.TreeShape;
+import net.smc.sim.experiment.UdpSetupTimeRun;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -33,16 +34,18 @@ import picocli.CommandLine.Spec;
 /**
  * {@code smc experiment setup-time}: the paper's Fig. 8. For each number of roles a mission is
  * generated ({@link MissionGenerator}), and each scheme's team is set up {@code --runs} times on the
- * simulated radio network ({@link SetupTimeRun}), seeds {@code --seed + run}. Writes
+ * simulated radio network ({@link SetupTimeRun}), and with {@code --transport udp} on loopback UDP
+ * ({@link UdpSetupTimeRun}), seeds {@code --seed + run}. Writes
  * {@code setup-time.csv}, {@code setup-time.png} and the CPU costs used ({@code costs.properties}) in
  * {@code --out}; shows a progress bar on standard error and a summary on standard output.
  */
 @Command(name = "setup-time", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = {"Measures the mission set-up time against the number of roles (the paper's Fig. 8), for the "
                 + "distributed and the centralised scheme, on a simulated ad-hoc radio network with each cell's CPU "
-                + "charged from costs measured on this machine (or read with --costs).",
-            "Writes DIR/setup-time.csv (one row per run), DIR/setup-time.png (median and p10-p90 band per scheme) "
-                    + "and DIR/costs.properties."},
+                + "charged from costs measured on this machine (or read with --costs); with --transport udp (or sim,udp) "
+                + "the same teams on real Netty UDP over loopback, timed on the wall clock.",
+            "Writes DIR/setup-time.csv (one row per run), DIR/setup-time.png (median and p10-p90 band per scheme "
+                    + "and transport) and DIR/costs.properties."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:every run finished (a run whose roles did not all start is a row with an empty setup_ms)",
             "2:usage error"})
@@ -69,9 +72,11 @@ final class SetupTimeCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "Where the results go (created).")
     Path out;
 
-    @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp",
-            description = "sim: the simulated radio network (default). udp is not available yet.")
-    String transport;
+    @Option(names = "--transport", split = ",", defaultValue = "sim", paramLabel = "sim|udp",
+            description = {"sim: the simulated radio network (default); udp: the same teams on real Netty UDP over "
+                    + "loopback, each cell with its own threads and sockets and signed traffic, at most "
+                    + UdpSetupTimeRun.MAX_ROLES + " roles; sim,udp: both, on one chart and in one CSV."})
+    List<String> transports;
 
     @Option(names = "--depth", defaultValue = "4", description = "Levels of the management tree (default: ${DEFAULT-VALUE}).")
     int depth;
@@ -85,7 +90,8 @@ final class SetupTimeCommand implements Callable<Integer> {
     Path costsFile;
 
     @Option(names = "--limit", defaultValue = "300000", paramLabel = "MS",
-            description = "Simulated time after which a run that has not set up is given up (default: ${DEFAULT-VALUE}).")
+            description = "Time after which a run that has not set up is given up: simulated ms, wall ms over udp "
+                    + "(default: ${DEFAULT-VALUE}).")
     long limitMillis;
 
     @Option(names = "--policies", defaultValue = "policies", paramLabel = "DIR",
@@ -100,6 +106,8 @@ final class SetupTimeCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         List<Scheme> schemeList = schemes();
         checkArguments();
+        boolean sim = transports.contains("sim");
+        boolean udp = transports.contains("udp");
         Path dir = io.workingDir().resolve(out);
         Path boot = io.workingDir().resolve(policies).resolve("boot/events.p2");
         if (!Files.isRegularFile(boot)) {
@@ -116,8 +124,10 @@ final class SetupTimeCommand implements Callable<Integer> {
             }
         }
         Path work = Files.createTempDirectory("smc-setup-time");
-        CpuCosts costs;
-        if (costsFile != null) {
+        CpuCosts costs = null;
+        if (!sim) {
+            io.stdout().println("transport: Netty UDP on loopback, signed traffic, wall-clock times");
+        } else if (costsFile != null) {
             try {
                 costs = CpuCosts.load(io.workingDir().resolve(costsFile));
             } catch (IOException | IllegalArgumentException e) {
@@ -128,14 +138,16 @@ final class SetupTimeCommand implements Callable<Integer> {
             io.stderr().flush();
             costs = Calibration.measure(boot, MissionGenerator.write(TreeShape.of(20, 4), work.resolve("calibration"), boot));
         }
-        costs.save(dir.resolve("costs.properties"));
         RadioNetwork radio = RadioNetwork.ADHOC_80211;
-        io.stdout().println("network: " + radio);
-        io.stdout().println("CPU costs: " + costs);
+        if (sim) {
+            costs.save(dir.resolve("costs.properties"));
+            io.stdout().println("network: " + radio);
+            io.stdout().println("CPU costs: " + costs);
+        }
         io.stdout().flush();
 
         List<SetupResult> results = new ArrayList<>();
-        int total = shapes.size() * schemeList.size() * runs;
+        int total = shapes.size() * schemeList.size() * transports.size() * runs;
         long t0 = System.nanoTime();
         try (Writer csv = Files.newBufferedWriter(dir.resolve("setup-time.csv"))) {
             SetupTimeCsv.writeHeader(csv);
@@ -144,15 +156,19 @@ final class SetupTimeCommand implements Callable<Integer> {
                 MissionLoader loader = new MissionLoader(new PolicyRepository(g.repository()));
                 for (Scheme scheme : schemeList) {
                     Mission mission = loader.load(g.instanceFile(scheme));
-                    long pointStart = System.nanoTime();
-                    for (int run = 1; run <= runs; run++) {
-                        progress(results.size(), total, shape.roles(), scheme, t0);
-                        SetupResult r = SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis);
-                        results.add(r);
-                        SetupTimeCsv.writeRow(csv, r);
-                        csv.flush();
+                    for (String transport : transports) {
+                        long pointStart = System.nanoTime();
+                        for (int run = 1; run <= runs; run++) {
+                            progress(results.size(), total, shape.roles(), scheme, t0);
+                            SetupResult r = transport.equals("udp")
+                                    ? UdpSetupTimeRun.run(g, mission, scheme, run, seed + run, limitMillis)
+                                    : SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis);
+                            results.add(r);
+                            SetupTimeCsv.writeRow(csv, r);
+                            csv.flush();
+                        }
+                        summary(results, shape.roles(), scheme, transport, (System.nanoTime() - pointStart) / 1e9);
                     }
-                    summary(results, shape.roles(), scheme, (System.nanoTime() - pointStart) / 1e9);
                 }
             }
         }
@@ -188,12 +204,20 @@ final class SetupTimeCommand implements Callable<Integer> {
         if (limitMillis < 1) {
             throw new ParameterException(spec.commandLine(), "--limit " + limitMillis + ": it must be 1 ms or more");
         }
-        if (transport.equals("udp")) {
-            throw new ParameterException(spec.commandLine(), "--transport udp is not available yet; only sim is "
-                    + "(the loopback UDP comparison is still to be written)");
+        for (String t : transports) {
+            if (!t.equals("sim") && !t.equals("udp")) {
+                throw new ParameterException(spec.commandLine(), "--transport " + t + ": it must be sim, udp or sim,udp");
+            }
         }
-        if (!transport.equals("sim")) {
-            throw new ParameterException(spec.commandLine(), "--transport " + transport + ": it must be sim or udp");
+        transports = transports.stream().distinct().toList();
+        if (transports.contains("udp")) {
+            for (int n : roles) {
+                if (n > UdpSetupTimeRun.MAX_ROLES) {
+                    throw new ParameterException(spec.commandLine(), "--roles " + n + " with --transport udp: a run over "
+                            + "UDP on one machine takes at most " + UdpSetupTimeRun.MAX_ROLES + " roles (each cell has "
+                            + "threads and sockets of its own); give --roles of " + UdpSetupTimeRun.MAX_ROLES + " or fewer");
+                }
+            }
         }
     }
 
@@ -206,11 +230,11 @@ final class SetupTimeCommand implements Callable<Integer> {
         io.stderr().flush();
     }
 
-    private void summary(List<SetupResult> results, int roles, Scheme scheme, double wallSeconds) {
+    private void summary(List<SetupResult> results, int roles, Scheme scheme, String transport, double wallSeconds) {
         List<Double> times = new ArrayList<>();
         int incomplete = 0;
         for (SetupResult r : results) {
-            if (r.roles() == roles && r.scheme() == scheme) {
+            if (r.roles() == roles && r.scheme() == scheme && r.transport().equals(transport)) {
                 if (r.complete()) {
                     times.add(r.setupMillis());
                 } else {
@@ -220,8 +244,8 @@ final class SetupTimeCommand implements Callable<Integer> {
         }
         double[] v = SetupTimeChart.sortedCopy(times);
         io.stderr().print("\r");
-        io.stdout().printf(Locale.ROOT, "%5d roles %-12s median %8.0f ms  p10 %8.0f  p90 %8.0f  (%d runs, %d incomplete, %.1f s wall)%n",
-                roles, scheme.name().toLowerCase(Locale.ROOT), v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.5),
+        io.stdout().printf(Locale.ROOT, "%5d roles %-12s %-4s median %8.0f ms  p10 %8.0f  p90 %8.0f  (%d runs, %d incomplete, %.1f s wall)%n",
+                roles, scheme.name().toLowerCase(Locale.ROOT), transport, v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.5),
                 v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.1), v.length == 0 ? Double.NaN : SetupTimeChart.rank(v, 0.9),
                 v.length, incomplete, wallSeconds);
         io.stdout().flush();

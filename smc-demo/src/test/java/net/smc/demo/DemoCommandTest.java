@@ -45,16 +45,53 @@ class DemoCommandTest {
         assertTrue(Files.exists(out.resolve("rescue.png")), "the picture of a failed run is written too");
     }
 
+    /**
+     * Over UDP on loopback at 2 mission seconds per wall second: the same steps, files and exit
+     * status, and the datagrams went through the cells' sockets.
+     */
+    @Test
+    void rescueOverUdp_succeeds_throughTheSockets(@TempDir Path out) throws Exception {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "rescue", "--transport", "udp", "--speed", "2", "--seed", "3",
+                "--out", out.toString());
+        assertEquals(0, r.status(), r.out() + r.err());
+        for (String step : List.of("(i)", "(ii)", "(iii)", "(iv)", "(v)", "(vi)", "(vii)")) {
+            assertTrue(r.out().contains(" " + step + " "), "step " + step + " on the timeline:\n" + r.out());
+        }
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("UDP: (\\d+) datagrams sent .*, (\\d+) delivered to cells")
+                .matcher(r.out());
+        assertTrue(m.find(), r.out());
+        assertTrue(Long.parseLong(m.group(1)) > 50 && Long.parseLong(m.group(2)) > 50, r.out());
+        assertTrue(r.out().contains("succeeded: "), r.out());
+        assertEquals(1200, ImageIO.read(out.resolve("rescue.png").toFile()).getWidth());
+        assertTrue(Files.size(out.resolve("rescue.gif")) > 10_000, "a film of some frames");
+        assertTrue(Files.readAllLines(out.resolve("rescue-timeline.csv")).stream().anyMatch(l -> l.endsWith(",vii")));
+    }
+
+    @Test
+    void rescueOverUdp_thatRunsOutOfTime_exitsOne_withTheReason(@TempDir Path out) {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "--transport", "udp", "--speed", "5", "--limit", "5", "--out", out.toString());
+        assertEquals(1, r.status(), r.out() + r.err());
+        assertTrue(r.out().contains("failed: no assistance delivered within 5.0 s"), r.out());
+        assertTrue(Files.exists(out.resolve("rescue.png")), "the picture of a failed run is written too");
+    }
+
+    @Test
+    void udpWithAWindow_isAUsageError(@TempDir Path out) {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "--transport", "udp", "--gui", "--out", out.toString());
+        assertEquals(2, r.status(), r.out() + r.err());
+        assertTrue(r.err().contains("--gui is for --transport sim only"), r.err());
+    }
+
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "burglary|unknown scenario 'burglary'",
         "--loss=1.5|--loss 1.5 is out of range",
         "--speed=0|--speed 0.0 must be a positive number",
-        "--transport=udp|--transport udp is not available yet",
         "--transport=carrier-pigeon|--transport 'carrier-pigeon' is unknown",
         "--limit=-1|--limit -1.0 must be above 0",
         "reconnaissance --limit=0|--limit 0.0 must be above 0",
         "reconnaissance --loss=-0.1|--loss -0.1 is out of range",
+        "reconnaissance --transport=udp|--transport udp is available for the rescue only",
         "--seed=many|many",
     })
     void badArguments_exitTwo_withTheRule(String arguments, String message, @TempDir Path out) {

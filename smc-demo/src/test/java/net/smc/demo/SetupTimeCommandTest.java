@@ -71,10 +71,40 @@ class SetupTimeCommandTest {
     }
 
     @Test
-    void udpTransport_isRefusedWithTheReason() {
-        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--transport", "udp", "--out", "o");
+    void udpTransport_withMoreThanFiftyRoles_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--transport", "udp", "--roles", "5,100", "--out", "o");
         assertEquals(2, r.status());
-        assertTrue(r.err().contains("--transport udp is not available yet"), r.err());
+        assertTrue(r.err().contains("--roles 100 with --transport udp") && r.err().contains("at most 50 roles"), r.err());
+    }
+
+    @Test
+    void unknownTransport_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--transport", "carrier-pigeon", "--out", "o");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--transport carrier-pigeon: it must be sim, udp or sim,udp"), r.err());
+    }
+
+    /** Both transports: one CSV with a transport column, the udp rows from real runs on loopback. */
+    @Test
+    void simAndUdp_fiveRoles_bothSchemes_writeRowsOfEachTransport() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--transport", "sim,udp",
+                "--out", "out", "--costs", costs().toString(), "--policies", policies().toString(), "--limit", "60000");
+        assertEquals(0, r.status(), r.err());
+        List<String> csv = Files.readAllLines(dir.resolve("out/setup-time.csv"));
+        assertEquals(1 + 2 * 2, csv.size(), String.join("\n", csv));
+        int udp = 0;
+        for (String row : csv.subList(1, csv.size())) {
+            String[] f = row.split(",", -1);
+            assertTrue(!f[4].isEmpty() && Double.parseDouble(f[4]) > 0, "every role started: " + row);
+            assertEquals(4, Integer.parseInt(f[8]), row);
+            assertTrue(Long.parseLong(f[5]) > 0 && Long.parseLong(f[6]) > 0, "messages counted: " + row);
+            if (f[2].equals("udp")) {
+                udp++;
+            }
+        }
+        assertEquals(2, udp, String.join("\n", csv));
+        assertTrue(r.out().contains("udp  median"), r.out());
+        assertTrue(Files.size(dir.resolve("out/setup-time.png")) > 1_000);
     }
 
     @Test

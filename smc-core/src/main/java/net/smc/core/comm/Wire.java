@@ -23,12 +23,13 @@ final class Wire {
     private static final Logger log = LoggerFactory.getLogger(Wire.class);
 
     private final Transport transport;
-    private final MessageEncoder encoder = new MessageEncoder();
+    private final MessageEncoder encoder;
     private final MessageDecoder decoder;
     private final CommCounters counters;
 
     Wire(Transport transport, Clock clock, ReassemblySettings reassembly, CommCounters counters) {
         this.transport = transport;
+        this.encoder = new MessageEncoder(transport.datagramCapacity());
         this.decoder = new MessageDecoder(clock::nowMillis, reassembly);
         this.counters = counters;
     }

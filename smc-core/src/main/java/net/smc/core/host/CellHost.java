@@ -8,28 +8,35 @@ import java.io.IOException;
 import java.util.Objects;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.concurrent.locks.Lock;
 import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.mission.Mission;
+import net.smc.core.role.TaskProvider;
 import net.smc.core.security.SigningIdentity;
 import net.smc.core.security.SecureEndpoint;
 import net.smc.core.security.SecureTransport;
 import net.smc.core.security.TrustAnchor;
 import net.smc.core.transport.udp.StatusResponder;
+import net.smc.core.transport.Clock;
+import net.smc.core.transport.Scheduler;
 import net.smc.core.transport.Transport;
 import net.smc.core.transport.real.RealTimeScheduler;
 import net.smc.core.transport.real.SystemClock;
+import net.smc.core.transport.udp.UdpCounters;
 import net.smc.core.transport.udp.UdpEventLoop;
 import net.smc.core.transport.udp.UdpSettings;
 import net.smc.core.transport.udp.UdpTransport;
+import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.PolicyRepository;
 
 /**
@@ -47,7 +54,11 @@ import net.smc.policy.api.PolicyRepository;
  */
 public final class CellHost implements AutoCloseable {
     private final ExecutorService thread;
+    /** Where the cell's inputs run: its thread, holding the guard if the settings gave one. */
+    private final Executor inputs;
+    private final Lock guard;
     private final ScheduledExecutorService timer;
+    private final UdpTransport udp;
     private final Transport transport;
     private final StatusResponder status;
     private final Cell cell;
@@ -56,10 +67,11 @@ public final class CellHost implements AutoCloseable {
         String name = "cell-" + s.vehicle;
         this.thread = Executors.newSingleThreadExecutor(r -> daemon(r, name));
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> daemon(r, name + "-timer"));
-        SystemClock clock = new SystemClock();
-        UdpTransport udp;
+        this.guard = s.guard;
+        this.inputs = guard == null ? thread : r -> thread.execute(() -> guarded(r));
+        Clock clock = s.clock == null ? new SystemClock() : s.clock;
         try {
-            udp = loop == null ? UdpTransport.open(s.udp, thread) : UdpTransport.open(s.udp, thread, loop);
+            udp = loop == null ? UdpTransport.open(s.udp, inputs) : UdpTransport.open(s.udp, inputs, loop);
         } catch (IOException | RuntimeException e) {
             thread.shutdownNow();
             timer.shutdownNow();
@@ -73,18 +85,36 @@ public final class CellHost implements AutoCloseable {
         Transport under = Objects.requireNonNull(s.wrap.apply(status), "the transport wrapper returned null");
         this.transport = s.identity == null ? under
                 : new SecureTransport(under, SecureEndpoint.builder(s.identity, s.trust, clock).build());
+        Scheduler realTime = new RealTimeScheduler(timer, inputs);
+        double rate = s.rate;
+        Scheduler scheduler = rate == 1 ? realTime
+                : (delayMillis, task) -> {
+                    Scheduler.checkDelay(delayMillis);
+                    return realTime.schedule(Math.round(delayMillis / rate), task);
+                };
         Cell.Builder b = Cell.builder(s.vehicle, s.mission, s.description).transport(transport).clock(clock)
-                .scheduler(new RealTimeScheduler(timer, thread)).repository(s.repository).commander(s.commander)
-                .seed(s.seed).trace(s.trace).output(s.output);
+                .scheduler(scheduler).repository(s.repository).commander(s.commander)
+                .seed(s.seed).trace(s.trace).output(s.output).tasks(s.tasks).auth(s.auth);
         if (s.scheme != null) {
             b.scheme(s.scheme);
         }
         this.cell = call(() -> {
             Cell c = b.build();
             made[0] = c;
+            s.beforeStart.accept(c);
             c.start();
+            s.afterStart.accept(c);
             return c;
         });
+    }
+
+    private void guarded(Runnable r) {
+        guard.lock();
+        try {
+            r.run();
+        } finally {
+            guard.unlock();
+        }
     }
 
     /** Starts a cell on its own UDP event loop. */
@@ -109,7 +139,14 @@ public final class CellHost implements AutoCloseable {
 
     /** Runs {@code action} on the cell's thread and waits for its answer (at most 10 s). */
     public <T> T call(Callable<T> action) {
-        Future<T> f = thread.submit(action);
+        Future<T> f = thread.submit(guard == null ? action : () -> {
+            guard.lock();
+            try {
+                return action.call();
+            } finally {
+                guard.unlock();
+            }
+        });
         try {
             return f.get(10, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
@@ -130,6 +167,11 @@ public final class CellHost implements AutoCloseable {
 
     public StatusResponder status() {
         return status;
+    }
+
+    /** What the cell's UDP sockets have done so far (datagrams handed to the kernel, delivered ...). */
+    public UdpCounters udpCounters() {
+        return udp.counters();
     }
 
     /** Stops the cell, closes the network and ends its threads. */
@@ -174,6 +216,13 @@ public final class CellHost implements AutoCloseable {
         private Consumer<CellEvent> trace = e -> { };
         private Consumer<String> output = line -> { };
         private UnaryOperator<Transport> wrap = UnaryOperator.identity();
+        private TaskProvider tasks = TaskProvider.NONE;
+        private AuthMode auth = AuthMode.OFF;
+        private Clock clock;
+        private double rate = 1;
+        private Lock guard;
+        private Consumer<Cell> beforeStart = c -> { };
+        private Consumer<Cell> afterStart = c -> { };
 
         private Settings(String vehicle, Mission mission, CapabilityDescription description, PolicyRepository repository) {
             this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
@@ -223,6 +272,56 @@ public final class CellHost implements AutoCloseable {
          */
         public Settings wrap(UnaryOperator<Transport> wrap) {
             this.wrap = Objects.requireNonNull(wrap, "wrap");
+            return this;
+        }
+
+        /** The vehicle's tasks (default none): see {@code Cell.Builder#tasks}. */
+        public Settings tasks(TaskProvider tasks) {
+            this.tasks = Objects.requireNonNull(tasks, "tasks");
+            return this;
+        }
+
+        /** The cell's authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
+        public Settings auth(AuthMode mode) {
+            this.auth = Objects.requireNonNull(mode, "auth");
+            return this;
+        }
+
+        /**
+         * The cell's clock instead of the system's, and how many of its milliseconds pass per wall
+         * millisecond ({@code rate}; the cell's timers wait {@code delay / rate} wall milliseconds).
+         * For a team that shares one mission clock, possibly running faster than the wall clock.
+         *
+         * @throws IllegalArgumentException when the rate is not a positive finite number
+         */
+        public Settings clock(Clock clock, double rate) {
+            if (!(rate > 0) || Double.isInfinite(rate)) {
+                throw new IllegalArgumentException("clock rate " + rate + " must be a positive finite number");
+            }
+            this.clock = Objects.requireNonNull(clock, "clock");
+            this.rate = rate;
+            return this;
+        }
+
+        /**
+         * A lock every input of the cell holds while it runs (datagrams, timers, {@link #call}): for a
+         * cell whose tasks share state with other threads, such as a simulated world stepped on a
+         * thread of its own. None by default.
+         */
+        public Settings guard(Lock guard) {
+            this.guard = Objects.requireNonNull(guard, "guard");
+            return this;
+        }
+
+        /** Runs on the cell's thread after it is built and before it starts (to install objects in its engine). */
+        public Settings beforeStart(Consumer<Cell> action) {
+            this.beforeStart = Objects.requireNonNull(action, "action");
+            return this;
+        }
+
+        /** Runs on the cell's thread right after it started. */
+        public Settings afterStart(Consumer<Cell> action) {
+            this.afterStart = Objects.requireNonNull(action, "action");
             return this;
         }
 

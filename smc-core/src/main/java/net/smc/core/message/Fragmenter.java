@@ -14,12 +14,20 @@ import net.smc.core.wire.ByteWriter;
  * place and length.
  */
 final class Fragmenter {
-    private final byte[] datagram = new byte[WireFormat.MAX_DATAGRAM];
-    private final ByteBuffer view = ByteBuffer.wrap(datagram).asReadOnlyBuffer();
+    private final int datagramLimit;
+    private final byte[] datagram;
+    private final ByteBuffer view;
+
+    /** A fragmenter whose frames are at most {@code datagramLimit} bytes long. */
+    Fragmenter(int datagramLimit) {
+        this.datagramLimit = datagramLimit;
+        this.datagram = new byte[datagramLimit];
+        this.view = ByteBuffer.wrap(datagram).asReadOnlyBuffer();
+    }
 
     /** Payload bytes one fragment frame can carry for a sender of {@code senderBytes}. */
-    static int capacity(int senderBytes) {
-        return WireFormat.MAX_DATAGRAM - Header.length(senderBytes) - WireFormat.FRAGMENT_HEADER;
+    int capacity(int senderBytes) {
+        return datagramLimit - Header.length(senderBytes) - WireFormat.FRAGMENT_HEADER;
     }
 
     /** How many fragments a payload of {@code total} bytes needs at {@code capacity} bytes each. */

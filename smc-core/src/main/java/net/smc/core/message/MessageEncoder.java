@@ -22,10 +22,32 @@ public final class MessageEncoder {
     private final byte[] scratch = new byte[HEADROOM + WireFormat.MAX_PAYLOAD];
     private final ByteBuffer scratchView = ByteBuffer.wrap(scratch).asReadOnlyBuffer();
     private final ByteWriter writer = new ByteWriter(scratch, () -> PayloadOverflow.INSTANCE);
-    private final Fragmenter fragmenter = new Fragmenter();
+    private final int datagramLimit;
+    private final Fragmenter fragmenter;
     private long messages;
     private long datagrams;
     private long fragmented;
+
+    /** An encoder whose datagrams are at most {@link WireFormat#MAX_DATAGRAM} bytes long. */
+    public MessageEncoder() {
+        this(WireFormat.MAX_DATAGRAM);
+    }
+
+    /**
+     * An encoder whose datagrams are at most {@code datagramLimit} bytes long: the capacity of the
+     * transport it feeds, once that has taken its own envelope off {@link WireFormat#MAX_DATAGRAM}.
+     *
+     * @throws IllegalArgumentException if the limit leaves no room for a fragment of the longest sender's message
+     */
+    public MessageEncoder(int datagramLimit) {
+        int least = Header.length(WireFormat.MAX_SENDER) + WireFormat.FRAGMENT_HEADER + 64;
+        if (datagramLimit < least || datagramLimit > WireFormat.MAX_DATAGRAM) {
+            throw new IllegalArgumentException("a datagram limit of " + datagramLimit + " bytes; it must be from "
+                    + least + " to " + WireFormat.MAX_DATAGRAM);
+        }
+        this.datagramLimit = datagramLimit;
+        this.fragmenter = new Fragmenter(datagramLimit);
+    }
 
     /**
      * Encodes a message that fits one datagram into {@code out}, from its position, and advances
@@ -41,9 +63,9 @@ public final class MessageEncoder {
         int payload = writePayload(envelope);
         int headerLength = Header.length(senderBytes);
         int size = headerLength + payload;
-        if (size > WireFormat.MAX_DATAGRAM) {
+        if (size > datagramLimit) {
             throw new IllegalArgumentException(describe(envelope) + ": its payload of " + payload
-                    + " bytes needs fragments (one datagram holds " + (WireFormat.MAX_DATAGRAM - headerLength)
+                    + " bytes needs fragments (one datagram holds " + (datagramLimit - headerLength)
                     + " payload bytes for this sender); use encode(envelope, sink)");
         }
         if (out.remaining() < size) {
@@ -70,7 +92,7 @@ public final class MessageEncoder {
         int payload = writePayload(envelope);
         int headerLength = Header.length(senderBytes);
         messages++;
-        if (headerLength + payload <= WireFormat.MAX_DATAGRAM) {
+        if (headerLength + payload <= datagramLimit) {
             int start = HEADROOM - headerLength;
             Header.write(scratch, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(), payload);
             scratchView.clear().position(start).limit(start + headerLength + payload);

@@ -60,6 +60,20 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     /**
+     * What the inner transport carries less the largest envelope this layer may put round a
+     * datagram (a signature with the credential, or a MAC), so that whatever the layer above sends
+     * fits whichever protection it gets.
+     */
+    @Override
+    public int datagramCapacity() {
+        int overhead = 0;
+        for (Protection p : Protection.values()) {
+            overhead = Math.max(overhead, endpoint.overhead(p));
+        }
+        return Math.min(inner.datagramCapacity(), Transport.MAX_DATAGRAM_BYTES) - overhead;
+    }
+
+    /**
      * Sends {@code data} to {@code to}, MAC'd if there is a session with the vehicle there, signed otherwise.
      *
      * @throws PayloadTooLargeException when the protected datagram would not fit

@@ -21,6 +21,11 @@ public abstract class ForwardingTransport implements Transport {
     }
 
     @Override
+    public int datagramCapacity() {
+        return inner.datagramCapacity();
+    }
+
+    @Override
     public void send(Address to, byte[] data) {
         inner.send(to, data);
     }

@@ -23,6 +23,15 @@ public interface Transport extends AutoCloseable {
      */
     int MAX_DATAGRAM_BYTES = 1400;
 
+    /**
+     * The most bytes one datagram handed to this endpoint may carry: {@link #MAX_DATAGRAM_BYTES}
+     * less what the layers below add to each datagram (an authentication envelope). Messages larger
+     * than this are cut into fragments that fit it.
+     */
+    default int datagramCapacity() {
+        return MAX_DATAGRAM_BYTES;
+    }
+
     /** Where other cells reach this one; the {@code from} address its datagrams carry. */
     Address localAddress();
 

@@ -36,6 +36,11 @@ final class FaultyTransport implements Transport {
     }
 
     @Override
+    public int datagramCapacity() {
+        return inner.datagramCapacity();
+    }
+
+    @Override
     public void send(Address to, byte[] data) {
         if (random.nextDouble() < loss) {
             dropped++;

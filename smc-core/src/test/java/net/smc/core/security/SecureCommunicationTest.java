@@ -13,6 +13,8 @@ import net.smc.core.comm.FailureReason;
 import net.smc.core.message.CapabilityRequest;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.MessageType;
+import net.smc.core.message.Roster;
+import net.smc.core.transport.Transport;
 import net.smc.core.router.MessageRouter;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.InMemoryNetwork;
@@ -41,6 +43,7 @@ class SecureCommunicationTest {
                     team.endpoint(identity, scheduler));
             MessageRouter router = new MessageRouter();
             router.register(received::add, MessageType.CAPABILITY_REQUEST);
+            router.register(received::add, MessageType.ROSTER);
             comm = CommunicationManager.builder(identity.credential().claims().vehicleId(), secure, scheduler, scheduler)
                     .random(new SplittableRandom(port)).router(router).build();
             comm.start();
@@ -70,6 +73,36 @@ class SecureCommunicationTest {
         assertEquals(1, surveyor.received.size());
         assertEquals("cdr", surveyor.received.get(0).sender());
         assertEquals(new CapabilityRequest("surveyor"), surveyor.received.get(0).body());
+    }
+
+    /**
+     * A message whose datagram fits {@link Transport#MAX_DATAGRAM_BYTES} bare but not once the
+     * authentication envelope is round it is cut into fragments that fit the secure layer's
+     * capacity: rosters of every size from one datagram to several arrive whole, signed before the
+     * two vehicles share a session and MAC'd after.
+     */
+    @Test
+    void messagesOfEverySizeNearTheDatagramLimit_fitTheSecureEnvelope_andArrive() {
+        Vehicle commander = new Vehicle(team.identity("cdr"), 5001);
+        Vehicle backup = new Vehicle(team.identity("uav1"), 5002);
+        assertTrue(commander.secure.datagramCapacity() < Transport.MAX_DATAGRAM_BYTES,
+                "the secure layer leaves room for its envelope: " + commander.secure.datagramCapacity());
+        List<Roster> sent = new ArrayList<>();
+        for (int n = 20; n <= 80; n++) {
+            List<Roster.Entry> members = new ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                members.add(new Roster.Entry("uav" + i, "10.0.0." + (i % 250) + ":7000", "relay", i));
+            }
+            Roster r = new Roster("m1", n, List.of("uav1"), members);
+            sent.add(r);
+            commander.comm.send(backup.comm.localAddress(), r);
+            scheduler.runFor(250);   // within the receiver's budget of signature checks per source
+        }
+
+        List<Long> arrived = backup.received.stream().map(e -> ((Roster) e.body()).epoch()).toList();
+        assertEquals(sent.stream().map(Roster::epoch).toList(), arrived, "the rosters that arrived, by member count");
+        assertEquals(sent, backup.received.stream().map(Envelope::body).toList());
+        assertTrue(commander.comm.counters().datagramsSent() > sent.size(), "the larger rosters went as fragments");
     }
 
     @Test

@@ -13,7 +13,8 @@ import net.smc.core.cell.Scheme;
  *                     -1 when not every role started within the limit
  * @param messages     datagrams sent until then (a broadcast once); -1 when not counted
  * @param bytes        bytes of those datagrams; -1 when not counted
- * @param busiestCpuMillis the CPU time charged to the busiest cell until then (0 on UDP: not charged)
+ * @param busiestCpuMillis the CPU time charged to the busiest cell until then; on UDP the CPU time its
+ *                     thread used, measured, until the run was seen to end
  * @param started      roles started (of {@code roles - 1}: the commander's is not assigned)
  */
 public record SetupResult(int roles, Scheme scheme, String transport, int run, double setupMillis, long messages,

@@ -27,8 +27,11 @@ import net.smc.sim.render.TrajectoryRecorder;
 import net.smc.sim.render.WorldPainter;
 import net.smc.sim.robot.SimRobot;
 import net.smc.sim.task.Assist;
+import net.smc.sim.team.CellTeam;
+import net.smc.sim.team.LiveTeam;
 import net.smc.sim.team.SimVehicle;
 import net.smc.sim.team.TeamSimulation;
+import net.smc.sim.team.TeamSimulationBuilder;
 import net.smc.sim.team.WorldTeam;
 import net.smc.sim.arena.Arena;
 import net.smc.sim.arena.ArenaException;
@@ -49,8 +52,11 @@ import net.smc.sim.world.WorldStepListener;
  * RescueScenario rescue = RescueScenario.load(Path.of("."), RescueScenario.Settings.of(7));
  * RescueScenario.Outcome outcome = rescue.run();   // outcome.succeeded(), rescue.timeline() ...
  * }</pre>
+ *
+ * <p>{@link #loadLive} runs the same scenario with every cell on real UDP over loopback and the
+ * world stepped in real time ({@link LiveTeam}); close it when done.
  */
-public final class RescueScenario {
+public final class RescueScenario implements AutoCloseable {
     /** The robots' resources and tasks: able to navigate, communicate, survey and detect hazards. */
     static final Set<String> ROBOT_RESOURCES = Set.of("motion", "video", "chemical", "communication");
     static final Set<String> ROBOT_TASKS = Set.of("Navigator", "Assist", "HazardDetector", "Aggregator");
@@ -117,7 +123,7 @@ public final class RescueScenario {
     }
 
     private final Settings settings;
-    private final TeamSimulation team;
+    private final CellTeam team;
     private final WorldTeam world;
     private final Arena.Hazard hazard;
     private final TrajectoryRecorder tracks = new TrajectoryRecorder(5);
@@ -133,8 +139,14 @@ public final class RescueScenario {
     private String trouble;
     private boolean zoneMarked;
 
+    /** Makes the team of the scenario from its settings: a simulation, or a live team. */
+    @FunctionalInterface
+    interface TeamMaker {
+        CellTeam make(TeamSimulationBuilder builder) throws IOException;
+    }
+
     private RescueScenario(Mission mission, PolicyRepository repository, Arena arena, Settings settings,
-                           Consumer<Timeline.Row> printer) {
+                           Consumer<Timeline.Row> printer, TeamMaker maker) throws IOException {
         this.settings = settings;
         this.log = new ScenarioLog(printer);
         this.hazard = arena.hazards().stream().findFirst()
@@ -144,13 +156,12 @@ public final class RescueScenario {
                 new SimVehicle("wearable", Set.of("bodySensors"), Set.of("Beacon"), false, false),
                 new SimVehicle("r1", ROBOT_RESOURCES, ROBOT_TASKS, false, false),
                 new SimVehicle("r2", ROBOT_RESOURCES, ROBOT_TASKS, false, false));
-        this.team = TeamSimulation.builder(mission, repository, settings.seed())
+        this.team = maker.make(TeamSimulation.builder(mission, repository, settings.seed())
                 .vehicles(vehicles).security(settings.security()).auth(AuthMode.DENY)
                 .link(LinkProfile.DEFAULT.withLatency(5, 10).withLoss(settings.loss()))
                 .world(arena).place("cdr", "cdr").place("wearable", "wearable").place("r1", "r1").place("r2", "r2")
                 .standalone("wearable", WEARABLE_POLICIES)
-                .listener(this::cellEvent).output(this::policyOutput)
-                .build();
+                .listener(this::cellEvent).output(this::policyOutput));
         this.world = team.world();
         SimWorld w = world.world();
         scene.roles(RoleLabels.of(roles)).trajectories(tracks).caption("(i) the soldier is wounded");
@@ -185,8 +196,24 @@ public final class RescueScenario {
      */
     public static RescueScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer)
             throws IOException, MissionException, ArenaException {
+        return load(projectDir, settings, printer, TeamSimulationBuilder::build);
+    }
+
+    /**
+     * The rescue with every cell on its own UDP sockets over loopback and the world stepped in
+     * real time, {@code speed} mission seconds per wall second ({@link LiveTeam}). The settings'
+     * security is ignored (traffic is always signed with fresh keys); its loss drops arriving
+     * datagrams. Close the scenario when done.
+     */
+    public static RescueScenario loadLive(Path projectDir, Settings settings, double speed, Consumer<Timeline.Row> printer)
+            throws IOException, MissionException, ArenaException {
+        return load(projectDir, settings, printer, b -> LiveTeam.open(b, speed));
+    }
+
+    private static RescueScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer, TeamMaker maker)
+            throws IOException, MissionException, ArenaException {
         ScenarioFiles files = ScenarioFiles.load(projectDir, "rescue.instance.xml", "rescue.xml");
-        return new RescueScenario(files.mission(), files.repository(), files.arena(), settings, printer);
+        return new RescueScenario(files.mission(), files.repository(), files.arena(), settings, printer, maker);
     }
 
     /** Runs the rescue until assistance is delivered, something goes wrong, or the time limit. */
@@ -199,9 +226,12 @@ public final class RescueScenario {
     /** Starts the cells and wounds the soldier (step (i)); then {@link #advance} and {@link #finish}. */
     public void start() {
         team.start();
-        row(0, "wearable", "WOUNDED", "the soldier is wounded: critical", "i");
-        team.cell("wearable").engine().raise("root/event/wounded", "wounded", "critical");
-        scene.caption("(ii) the wearable computer calls for help");
+        team.exclusive(() -> {
+            row(team.nowMillis(), "wearable", "WOUNDED", "the soldier is wounded: critical", "i");
+            team.cell("wearable").engine().raise("root/event/wounded", "wounded", "critical");
+            scene.caption("(ii) the wearable computer calls for help");
+            return null;
+        });
     }
 
     /** Runs for at most {@code millis} of mission time, less if the run ends. */
@@ -219,6 +249,10 @@ public final class RescueScenario {
 
     /** Ends the run and tells how it went. */
     public Outcome finish() {
+        return team.exclusive(this::conclude);
+    }
+
+    private Outcome conclude() {
         if (film != null) {
             film.capture(world.world());
         }
@@ -359,7 +393,7 @@ public final class RescueScenario {
 
     /** What each live cell's policies reported as errors (a policy denied, a failed send ...), by vehicle. */
     public Map<String, List<String>> diagnostics() {
-        return ScenarioLog.diagnostics(team);
+        return team.exclusive(() -> ScenarioLog.diagnostics(team));
     }
 
     public Timeline timeline() {
@@ -374,8 +408,15 @@ public final class RescueScenario {
         return world.world();
     }
 
-    public TeamSimulation team() {
+    /** The team: a {@link TeamSimulation}, or a {@link LiveTeam} when loaded with {@link #loadLive}. */
+    public CellTeam team() {
         return team;
+    }
+
+    /** Stops the team's threads and closes its sockets, if it has any (a live team); the world stays to be drawn. */
+    @Override
+    public void close() {
+        team.close();
     }
 
     public TrajectoryRecorder trajectories() {

@@ -10,7 +10,7 @@ import java.util.function.Consumer;
 import net.smc.core.cell.Cell;
 import net.smc.sim.render.Timeline;
 import net.smc.sim.team.SimVehicle;
-import net.smc.sim.team.TeamSimulation;
+import net.smc.sim.team.CellTeam;
 
 /** A scenario's timeline, each row also passed to a printer as it is recorded; and the cells' diagnostics. */
 final class ScenarioLog {
@@ -36,7 +36,7 @@ final class ScenarioLog {
     }
 
     /** What each live cell's policies reported as errors (a policy denied, a failed send ...), by vehicle. */
-    static Map<String, List<String>> diagnostics(TeamSimulation team) {
+    static Map<String, List<String>> diagnostics(CellTeam team) {
         Map<String, List<String>> out = new LinkedHashMap<>();
         for (SimVehicle v : team.vehicles()) {
             Cell c = team.cell(v.id());

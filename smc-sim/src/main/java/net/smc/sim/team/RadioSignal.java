@@ -23,11 +23,11 @@ public final class RadioSignal {
     /** The name under root. */
     static final String NAME = "signal";
 
-    private final TeamSimulation team;
+    private final CellTeam team;
     private final String sender;
     private long sent;
 
-    RadioSignal(TeamSimulation team, String sender) {
+    RadioSignal(CellTeam team, String sender) {
         this.team = Objects.requireNonNull(team, "team");
         this.sender = Objects.requireNonNull(sender, "sender");
     }

@@ -55,7 +55,7 @@ import net.smc.sim.world.SimWorld;
  * sim.runUntil(() -> sim.commanderState().equals(Optional.of(MissionState.OPTIMAL)), 60_000);
  * }</pre>
  */
-public final class TeamSimulation {
+public final class TeamSimulation implements CellTeam {
     /** Virtual time between invariant checks. */
     public static final long STEP_MILLIS = 50;
     /** Trace lines kept for a failure report. */
@@ -144,6 +144,7 @@ public final class TeamSimulation {
     }
 
     /** Starts every vehicle's cell, and the adversary if there is one. */
+    @Override
     public void start() {
         if (adversary != null) {
             adversary.start();
@@ -296,6 +297,7 @@ public final class TeamSimulation {
      *
      * @return whether it came to hold
      */
+    @Override
     public boolean runUntil(BooleanSupplier condition, long maxMillis) {
         long end = sim.nowMillis() + maxMillis;
         while (!condition.getAsBoolean()) {
@@ -308,6 +310,7 @@ public final class TeamSimulation {
         return true;
     }
 
+    @Override
     public long nowMillis() {
         return sim.nowMillis();
     }
@@ -321,6 +324,7 @@ public final class TeamSimulation {
     }
 
     /** The live cell of a vehicle, or null while it is crashed. */
+    @Override
     public Cell cell(String vehicle) {
         return node(vehicle).cell;
     }
@@ -330,14 +334,17 @@ public final class TeamSimulation {
         return nodes.values().stream().filter(n -> n.cell != null && !n.spec.rogue()).map(n -> n.cell).toList();
     }
 
+    @Override
     public Collection<SimVehicle> vehicles() {
         return nodes.values().stream().map(n -> n.spec).toList();
     }
 
+    @Override
     public SimVehicle vehicle(String id) {
         return node(id).spec;
     }
 
+    @Override
     public boolean isLive(String vehicle) {
         Node n = nodes.get(vehicle);
         return n != null && n.cell != null;
@@ -370,16 +377,19 @@ public final class TeamSimulation {
     }
 
     /** The world's side of the simulation, or null when it has no world. */
+    @Override
     public WorldTeam world() {
         return world;
     }
 
     /** The scheduler of the virtual clock (the world steps on it too). */
+    @Override
     public SimulationScheduler scheduler() {
         return sim;
     }
 
     /** Where {@code vehicle} is attached to the network. */
+    @Override
     public Address address(String vehicle) {
         return node(vehicle).address;
     }

@@ -37,7 +37,7 @@ public final class WorldTeam {
     /** World steps between two position reports of a robot. */
     private static final int REPORT_EVERY = 5;
 
-    private final TeamSimulation team;
+    private final CellTeam team;
     private final SimWorld world;
     private final TaskCatalog catalog;
     private final Map<String, String> places;
@@ -47,7 +47,7 @@ public final class WorldTeam {
     private final Map<String, Map<String, Task>> tasks = new LinkedHashMap<>();
     private final Map<String, RadioSignal> signals = new LinkedHashMap<>();
 
-    WorldTeam(TeamSimulation team, SimWorld world, TaskCatalog catalog, Map<String, String> places,
+    WorldTeam(CellTeam team, SimWorld world, TaskCatalog catalog, Map<String, String> places,
               Map<String, List<String>> standalone) {
         this.team = team;
         this.world = world;

@@ -6,6 +6,8 @@
  * trace; the same seed replays it exactly. A team may live in the dyn4j world ({@link
  * net.smc.sim.team.WorldTeam}): robots and stations carry the cells, the world's radio carries
  * their traffic, and {@link net.smc.sim.team.RadioSignal} passes the soldier's distress call
- * from the wearable computer to whoever hears it.
+ * from the wearable computer to whoever hears it. {@link net.smc.sim.team.LiveTeam} runs such a team
+ * with its cells on real UDP over loopback and the world stepped on the wall clock; both are a
+ * {@link net.smc.sim.team.CellTeam}.
  */
 package net.smc.sim.team;
