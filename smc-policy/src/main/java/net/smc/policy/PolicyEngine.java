@@ -296,6 +296,17 @@ public final class PolicyEngine {
         runtime.register(name, type);
     }
 
+    /**
+     * The policy version: a number that grows whenever what this cell's policies decide may have
+     * changed (a policy loaded or created, enabled, disabled, withdrawn or reconfigured, an
+     * authorisation policy changed, or, with authorisation on, domain membership). A caller that
+     * remembers a decision of the policies can keep it while the version stays the same; decisions
+     * whose conditions read other state (a counter, the time) need a bound of their own.
+     */
+    public long policyVersion() {
+        return runtime.policyVersion();
+    }
+
     /** The root domain. */
     public DomainHandle root() {
         return runtime.root();

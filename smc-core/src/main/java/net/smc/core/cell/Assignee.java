@@ -37,12 +37,15 @@ final class Assignee {
     private final TeamState st;
     private final Seating seating;
     private final Merge merge;
+    /** Run when this cell has taken a role: a manager starts discovering its children at once. */
+    private final Runnable roleTaken;
 
-    Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge) {
+    Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge, Runnable roleTaken) {
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
         this.merge = merge;
+        this.roleTaken = roleTaken;
     }
 
     void onDiscovery(Envelope env, Discovery d) {
@@ -149,6 +152,13 @@ final class Assignee {
         st.incoming = null;
         RoleAssignment a = in.assignment();
         Seat seat = new Seat(a.role(), slotOf(a));
+        if (st.acting || st.left) {
+            // It took over as commander (or left) while the role's policies were on their way.
+            String why = st.acting ? "this vehicle is now the acting commander" : "this vehicle has left the team";
+            ctx.emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": " + why);
+            ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), false, why));
+            return;
+        }
         if (st.parent != null && !st.parent.vehicle().equals(in.from())) {
             if (!promotion(a.role(), a.epoch())) {
                 ctx.emit(CellEvent.Kind.REFUSED, seat + " from " + in.from() + ": no longer free to move up");
@@ -210,6 +220,7 @@ final class Assignee {
             ctx.host().importTaskStates(a.role(), a.handover());
             ctx.host().raise("handover", "handover", a.role(), a.handover());
         }
+        roleTaken.run();
     }
 
     /**

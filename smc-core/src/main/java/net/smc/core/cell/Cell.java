@@ -174,6 +174,11 @@ public final class Cell {
             }
 
             @Override
+            public long policyVersion() {
+                return engine.policyVersion();
+            }
+
+            @Override
             public List<Object> taskStates() {
                 return Cell.this.taskStates();
             }
@@ -188,8 +193,7 @@ public final class Cell {
                 .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
         this.gateway = new ExternalGateway(roles);
-        new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol::requestFullCapability)
-                .install(engine);
+        new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol).install(engine);
         protocol.register(router);
         engine.teamLink(new TeamLink() {
             @Override

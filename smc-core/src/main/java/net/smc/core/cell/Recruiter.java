@@ -6,10 +6,12 @@ import java.util.Map;
 import java.util.Optional;
 
 import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
 import net.smc.core.cell.TeamState.PendingCapability;
+import net.smc.core.cell.TeamState.Refusal;
 import net.smc.core.comm.DeliveryListener;
 import net.smc.core.comm.FailureReason;
 import net.smc.core.message.AssignmentResponse;
@@ -38,8 +40,16 @@ final class Recruiter {
     private final Seating seating;
     private final TeamCounts counts;
     private final BackupCommander backup;
+    /** The vehicle whose {@code newUAV} the policies are deciding on now, or null. */
+    private String deciding;
+    /** Whether the policies asked for {@link #deciding}'s full description while deciding. */
+    private boolean askedFor;
 
-    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup) {
+    /** Discovers at once (rate-limited by Supervisor), when a seat offered to a vehicle opens again. */
+    private final Runnable rediscover;
+
+    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
+        this.rediscover = rediscover;
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -55,14 +65,47 @@ final class Recruiter {
             ctx.reject(env, "capability summary names vehicle '" + r.summary().vehicle() + "'");
             return;
         }
-        st.heard.put(env.sender(), new Heard(r.summary(), ctx.clock().nowMillis()));
+        long now = ctx.clock().nowMillis();
+        st.heard.put(env.sender(), new Heard(r.summary(), now));
         if (st.children.containsKey(env.sender()) || !st.hasVacancy()) {
             return;
         }
         // Table I decides whom to ask: newUAV(name uav lowLevelCap credential).
         // A vehicle that presented no credential (or a cell without authentication) gives PonderTalk nil.
         Object credential = ctx.host().credentialOf(env.sender()).<Object>map(c -> c).orElse(Nil.NIL);
-        ctx.host().raise("newUAV", "newUAV", env.sender(), r.summary(), credential);
+        Refusal before = st.refused.get(env.sender());
+        if (before != null && before.stands(refusal(r.summary(), credential, now), refusalMillis())) {
+            return; // the same policies passed over the same vehicle for the same open seats: they would again
+        }
+        st.refused.remove(env.sender());
+        deciding = env.sender();
+        askedFor = false;
+        try {
+            ctx.host().raise("newUAV", "newUAV", env.sender(), r.summary(), credential);
+        } finally {
+            deciding = null;
+        }
+        if (!askedFor) {
+            // Taken after the raise: a change the policies made while deciding is part of their decision.
+            st.refused.put(env.sender(), refusal(r.summary(), credential, now));
+        }
+    }
+
+    /** The key of a refusal now: what the vehicle presented, the policies' version and this cell's open seats. */
+    private Refusal refusal(CapabilitySummary summary, Object credential, long now) {
+        return new Refusal(summary, credential, ctx.host().policyVersion(),
+                st.owned.keySet().stream().filter(st::open).toList(), now);
+    }
+
+    /**
+     * How long a refusal is remembered at most: four failure timeouts (12 s in the reconnaissance
+     * mission). Within it a free vehicle that keeps answering discovery is put to the policies
+     * again only when what it presents (capability summary, credential), the policies (their
+     * version) or this cell's open seats change; the bound covers conditions that read other state
+     * (counts, the time, what a task observed).
+     */
+    long refusalMillis() {
+        return 4 * ctx.timing().failureTimeoutMillis();
     }
 
     /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
@@ -74,6 +117,10 @@ final class Recruiter {
         if (st.owned.keySet().stream().noneMatch(s -> s.role().equals(role) && st.open(s))) {
             return; // nothing to give for that role now
         }
+        if (uav.equals(deciding)) {
+            askedFor = true;
+        }
+        st.refused.remove(uav);
         PendingCapability pending = st.capabilityRequests.get(uav);
         if (pending != null) {
             pending.roles.add(role);
@@ -110,6 +157,13 @@ final class Recruiter {
                 .filter(s -> ctx.slots().role(s.role()).requirement().isMetBy(full))
                 .min(this::preferVacant);
         if (seat.isEmpty()) {
+            // Algorithm 2 found no seat asked for that the vehicle can take: while the same stands,
+            // asking again would find none again.
+            Heard heard = st.heard.get(env.sender());
+            if (heard != null && known == null) {
+                Object credential = ctx.host().credentialOf(env.sender()).<Object>map(c -> c).orElse(Nil.NIL);
+                st.refused.put(env.sender(), refusal(heard.summary(), credential, ctx.clock().nowMillis()));
+            }
             return;
         }
         if (st.owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
@@ -284,6 +338,9 @@ final class Recruiter {
             st.children.remove(vehicle);
         }
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
+        // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
+        // say), not at the next tick.
+        rediscover.run();
     }
 
     void onPolicyRequest(Envelope env, PolicyRequest r) {
@@ -305,6 +362,7 @@ final class Recruiter {
         st.abandoned.values().removeIf(until -> now >= until);
         st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
         st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        st.refused.values().removeIf(r -> now - r.atMillis() >= refusalMillis());
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();
             if (o.pendingFor != null && now - o.pendingSince > ctx.pendingMillis()) {

@@ -22,11 +22,22 @@ import net.smc.core.transport.Address;
 
 /**
  * The manager's tick and its children's heartbeats: answers each heartbeat with a status (which
- * renews the child's lease), detects silent children and raises {@code UAVFailure} (Table II),
+ * renews the child's lease; a child whose heartbeat went unanswered for a period and a half gets
+ * one from the tick), detects silent children and raises {@code UAVFailure} (Table II),
  * carries out re-assignment, and moves the team towards the reasonably-optimal configuration
  * (secondary seats hosted, children promoted or swapped). Owns HEARTBEAT.
  */
 final class Supervisor {
+    /**
+     * A child is sent a status of this cell's own only when none went to it (in answer to its
+     * heartbeats) for this many half heartbeat periods: in the steady state the answer to each
+     * heartbeat is the only status, one per period; when a heartbeat is lost, the tick sends one.
+     * One and a half periods, so that the jitter of heartbeats does not bring a second status.
+     */
+    private static final int STATUS_GAP_HALF_PERIODS = 3;
+    /** When {@link #rediscover} last discovered (far in the past: never). */
+    private long rediscoveredMillis = Long.MIN_VALUE / 2;
+
     private final TeamContext ctx;
     private final TeamState st;
     private final Seating seating;
@@ -79,6 +90,7 @@ final class Supervisor {
     /** Tells a child the team's state, echoing its latest heartbeat heard (which renews its lease). */
     private void sendStatus(Child child) {
         if (child.address != null && st.identity != null) {
+            child.statusSentMillis = ctx.clock().nowMillis();
             ctx.send(child.address, new Status(ctx.missionId(), st.identity, st.commander == null ? ctx.self() : st.commander, st.epoch,
                     counts.teamSize(), child.consistent ? child.lastHeartbeat : 0, st.ancestors));
         }
@@ -100,7 +112,9 @@ final class Supervisor {
         }
         for (Child c : st.children.values()) {
             if (!c.seats.isEmpty()) {
-                sendStatus(c);
+                if (now - c.statusSentMillis >= STATUS_GAP_HALF_PERIODS * ctx.timing().comTimeoutMillis() / 2) {
+                    sendStatus(c); // its heartbeat went unanswered (lost, say): a status of this cell's own
+                }
                 if (c.description == null && !st.capabilityRequests.containsKey(c.vehicle) && c.address != null) {
                     // A child known from a roster: learn what it can do, to move it if need be.
                     st.capabilityRequests.put(c.vehicle, new PendingCapability(now));
@@ -111,19 +125,54 @@ final class Supervisor {
         }
         fillSecondarySeats();
         swapTowardsOptimal(now);
-        boolean open = st.hasVacancy();
-        if (open && !st.discovering) {
-            ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
-                    + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
-        }
-        st.discovering = open;
-        if (open || (st.acting && st.ticks % Timing.BEACON_TICKS == 0)) {
+        boolean open = noteDiscovering();
+        if (open || (st.acting && !st.recruitingHeld && st.ticks % Timing.BEACON_TICKS == 0)) {
             merge.discover();
         }
         if (st.acting && st.ticks % Timing.ROSTER_TICKS == 0) {
             backup.sendRoster();
         }
         counts.updateMissionState();
+    }
+
+    /** Whether this cell has an open seat; a DISCOVERING event marks each start of discovery. */
+    private boolean noteDiscovering() {
+        // While a policy holds recruiting, the manager looks for no one: no discovery, so no assignment.
+        boolean open = st.hasVacancy() && !st.recruitingHeld;
+        if (open && !st.discovering) {
+            ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
+                    + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
+        }
+        st.discovering = open;
+        return open;
+    }
+
+    /**
+     * Discovers at once when this cell has an open seat: a manager whose role has just started (or
+     * a commander starting) looks for its children now rather than at its next tick, so a tree of
+     * depth d forms without waiting up to d heartbeat periods. The tick goes on discovering every
+     * period while a seat stays open.
+     */
+    void discoverNow() {
+        if (!st.seats.isEmpty() && !st.owned.isEmpty() && noteDiscovering()) {
+            merge.discover();
+        }
+    }
+
+    /**
+     * A seat offered to a vehicle is open again (it refused, or never answered): discovers at once,
+     * unless capability requests are still out (their answers will find the seat open, with no
+     * broadcast: in a large team many managers compete for the same free vehicles, and each
+     * rediscovery would bring every one of them to answer again), and not within a quarter
+     * heartbeat period of the last such discovery, so that vehicles refusing every offer cost at
+     * most four extra discoveries a period.
+     */
+    void rediscover() {
+        long now = ctx.clock().nowMillis();
+        if (st.capabilityRequests.isEmpty() && now - rediscoveredMillis >= ctx.timing().comTimeoutMillis() / 4) {
+            rediscoveredMillis = now;
+            discoverNow();
+        }
     }
 
     /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */

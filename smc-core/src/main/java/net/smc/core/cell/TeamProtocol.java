@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.BiConsumer;
 
+import net.smc.core.discovery.DiscoveryActions;
 import net.smc.core.message.AssignmentResponse;
 import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
@@ -54,7 +55,7 @@ import net.smc.core.transport.Cancellable;
  * of seats, identities and priorities are {@link Slots}'; the times are {@link Timing}'s. See
  * <a href="doc-files/team-protocols.md">the team-protocols design note</a>.
  */
-final class TeamProtocol {
+final class TeamProtocol implements DiscoveryActions {
 
     /** What the protocol needs of the rest of its cell. */
     interface Host {
@@ -110,6 +111,14 @@ final class TeamProtocol {
             throw new ExternalCallException(ExternalCallException.Kind.NO_SUCH_ROLE, "this cell evaluates nothing for others");
         }
 
+        /**
+         * The version of the cell's policies ({@code PolicyEngine.policyVersion()}): it grows whenever
+         * what they decide may have changed. Always 0 for a host whose policies never change.
+         */
+        default long policyVersion() {
+            return 0;
+        }
+
         /** Reports an error in the cell's policy engine, as its own errors are. */
         default void report(String error) {
         }
@@ -152,9 +161,9 @@ final class TeamProtocol {
         this.counts = new TeamCounts(ctx, st);
         this.merge = new Merge(ctx, st, seating);
         this.backup = new BackupCommander(ctx, st, seating, counts, merge);
-        this.recruiter = new Recruiter(ctx, st, seating, counts, backup);
+        this.recruiter = new Recruiter(ctx, st, seating, counts, backup, this::rediscover);
         this.reports = new Reports(ctx, st, counts, recruiter);
-        this.assignee = new Assignee(ctx, st, seating, merge);
+        this.assignee = new Assignee(ctx, st, seating, merge, this::discoverNow);
         this.membership = new Membership(ctx, st, seating, counts, backup, reports);
         this.supervisor = new Supervisor(ctx, st, seating, counts, backup, recruiter, merge);
         this.collaboration = new Collaboration(ctx, st, assignee);
@@ -218,8 +227,19 @@ final class TeamProtocol {
             seating.recomputeOwnership();
             ctx.emit(CellEvent.Kind.COMMANDING, "acting commander of " + ctx.missionId() + " " + st.identity
                     + ", scheme " + ctx.slots().scheme().name().toLowerCase());
+            supervisor.discoverNow();
         }
         tickTimer = ctx.scheduler().schedule(tickPhaseMillis, this::tick);
+    }
+
+    /** This cell has just taken a role: as a manager, it discovers at once. */
+    private void discoverNow() {
+        supervisor.discoverNow();
+    }
+
+    /** A seat this cell offered is open again: it discovers at once (at most four times a period). */
+    private void rediscover() {
+        supervisor.rediscover();
     }
 
     void stop() {
@@ -263,8 +283,27 @@ final class TeamProtocol {
     // ---------------------------------------------------------------- asked by policies and tasks
 
     /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
-    void requestFullCapability(String uav, String role) {
+    @Override
+    public void requestFullCapability(String uav, String role) {
         recruiter.requestFullCapability(uav, role);
+    }
+
+    /**
+     * Asked by a policy ({@code root/discovery hold} or {@code resume}): while held, this cell as a
+     * manager sends no discovery broadcast, so it recruits no one; on resume it discovers at once,
+     * as a manager whose role has just started does.
+     */
+    @Override
+    public void holdRecruiting(boolean held) {
+        st.recruitingHeld = held;
+        if (!held) {
+            supervisor.discoverNow();
+        }
+    }
+
+    @Override
+    public boolean recruitingHeld() {
+        return st.recruitingHeld;
     }
 
     /** Asked by a policy ({@code root/role/<manager> reassign: role scheme: s}): find the role a new holder. */

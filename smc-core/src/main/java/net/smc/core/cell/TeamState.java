@@ -52,6 +52,8 @@ final class TeamState {
     final Map<String, Child> children = new TreeMap<>();
     final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
     final Map<String, Heard> heard = new HashMap<>();
+    /** Free vehicles this cell's policies passed over when they were discovered, by vehicle (Recruiter). */
+    final Map<String, Refusal> refused = new HashMap<>();
     final Map<String, List<Object>> handover = new HashMap<>();
     /**
      * Former children and assignees that may still name this cell as their parent (a Leave can be
@@ -62,6 +64,8 @@ final class TeamState {
     MissionState missionState;
     /** Whether the last tick found an open seat (a DISCOVERING event marks each start). */
     boolean discovering;
+    /** Recruiting held by policy ({@code root/discovery hold}): as a manager, no discovery is sent. */
+    boolean recruitingHeld;
 
     // As a backup commander (written by BackupCommander, Membership, Seating).
     Roster roster;
@@ -74,6 +78,20 @@ final class TeamState {
     }
 
     record Heard(CapabilitySummary summary, long atMillis) {
+    }
+
+    /**
+     * A free vehicle this cell passed over: when it replied with {@code summary} and
+     * {@code credential} (compared by value; {@code Nil} when it presented none), the policies at
+     * {@code policyVersion} asked for no open seat of the {@code openSeats} this cell had, or its
+     * full description met the requirement of none they asked for.
+     */
+    record Refusal(CapabilitySummary summary, Object credential, long policyVersion, List<Seat> openSeats, long atMillis) {
+        /** Whether the same decision stands: the same vehicle, policies and open seats, within {@code maxMillis}. */
+        boolean stands(Refusal now, long maxMillis) {
+            return summary.equals(now.summary) && credential.equals(now.credential) && policyVersion == now.policyVersion
+                    && openSeats.equals(now.openSeats) && now.atMillis - atMillis < maxMillis;
+        }
     }
 
     static final class PendingCapability {
@@ -104,6 +122,8 @@ final class TeamState {
         int hosted;
         /** Envelope id of the latest heartbeat heard from it, echoed in every status. */
         long lastHeartbeat;
+        /** When this cell last sent it a status (far in the past: never). */
+        long statusSentMillis = Long.MIN_VALUE / 2;
         /**
          * Whether its last report agreed with this cell's table. Its lease is renewed (its heartbeats
          * echoed) only then, so a child that claims a seat given to another stops counting until it

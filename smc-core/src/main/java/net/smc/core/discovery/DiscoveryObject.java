@@ -15,8 +15,9 @@ import org.slf4j.LoggerFactory;
 
 /**
  * {@code root/discovery}: the operations the paper's role-assignment policy (Table I) uses when a
- * discovery reply arrives as a {@code newUAV} event. It decides nothing itself; policies decide
- * whom to ask, and {@link DiscoveryActions} does the asking. Counts what it does.
+ * discovery reply arrives as a {@code newUAV} event, and {@code hold}/{@code resume}, with which a
+ * role-mission decides when its manager recruits at all. It decides nothing itself; policies
+ * decide whom to ask and when, and {@link DiscoveryActions} does the asking. Counts what it does.
  *
  * <pre>{@code
  * DiscoveryObject discovery = new DiscoveryObject(CredentialCheck.sharedToken("team-7"), protocols::requestFullCapability);
@@ -87,6 +88,27 @@ public final class DiscoveryObject {
     public void requestFullCapability(String uav, String role) {
         requests++;
         actions.requestFullCapability(uav, role);
+    }
+
+    /**
+     * Holds this cell's recruiting: as a manager it discovers no one, and so assigns no role, until
+     * {@link #resume}. A role-mission that assembles its team on an event holds it when loaded.
+     */
+    @Op("hold")
+    public void hold() {
+        actions.holdRecruiting(true);
+    }
+
+    /** Resumes the recruiting {@link #hold} held: the manager discovers at its next tick. */
+    @Op("resume")
+    public void resume() {
+        actions.holdRecruiting(false);
+    }
+
+    /** Whether recruiting is held now. */
+    @Op("isHeld")
+    public boolean isHeld() {
+        return actions.recruitingHeld();
     }
 
     /** Checks passed. */

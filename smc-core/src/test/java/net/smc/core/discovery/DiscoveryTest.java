@@ -103,4 +103,33 @@ class DiscoveryTest {
         assertFalse(check.accepts("uav1", "team8"));
         assertFalse(check.accepts("uav1", 7));
     }
+
+    @Test
+    void holdAndResume_reachTheTeamProtocols_andACellWithoutThemSaysSo() {
+        List<Boolean> held = new ArrayList<>();
+        PolicyEngine recruiting = PolicyEngine.builder().errors(errors::add).build();
+        new DiscoveryObject(CredentialCheck.sharedToken("team7"), new DiscoveryActions() {
+            @Override
+            public void requestFullCapability(String uav, String role) {
+            }
+
+            @Override
+            public void holdRecruiting(boolean h) {
+                held.add(h);
+            }
+
+            @Override
+            public boolean recruitingHeld() {
+                return !held.isEmpty() && held.get(held.size() - 1);
+            }
+        }).install(recruiting);
+        assertTrue(recruiting.run("policy", "root/discovery hold. root at: \"h\" put: root/discovery isHeld. root/discovery resume.").ok(),
+                errors::toString);
+        assertEquals(List.of(true, false), held);
+        assertEquals(Boolean.TRUE, recruiting.root().get("h"));
+
+        RunResult r = cell.run("shell", "root/discovery hold.");
+        assertFalse(r.ok());
+        assertTrue(r.diagnostics().get(0).message().contains("cannot be held"), r.diagnostics()::toString);
+    }
 }

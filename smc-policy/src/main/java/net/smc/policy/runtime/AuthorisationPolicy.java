@@ -57,6 +57,7 @@ public final class AuthorisationPolicy extends ManagedObject implements net.smc.
     }
 
     private AuthorisationPolicy changed() {
+        runtime.policiesChanged();
         if (runtime.authoriser() != null) {
             runtime.authoriser().policiesChanged();
         }
@@ -97,6 +98,7 @@ public final class AuthorisationPolicy extends ManagedObject implements net.smc.
     public boolean active(boolean on) {
         if (on != active) {
             active = on;
+            runtime.policiesChanged();
             if (runtime.authoriser() != null) {
                 runtime.authoriser().activeChanged(this);
             }

@@ -61,6 +61,8 @@ public final class CellRuntime {
     private boolean booting = true;
     private TeamLink teamLink = TeamLink.NONE;
     private long attachCounter;
+    /** Bumped on every change that can change what the policies decide: see {@link #policyVersion()}. */
+    private long policyVersion;
     private Integer exitStatus;
     /** The status {@link #stop} gave, or -1; set from any thread, read by running executions. */
     private volatile int stopStatus = -1;
@@ -246,13 +248,32 @@ public final class CellRuntime {
         booting = false;
         if (authoriser != null) {
             authoriser.invalidate();
+            policiesChanged();
         }
     }
 
+    /** Domain membership changed: with authorisation on, what the authorisation policies allow may have. */
     void membershipChanged() {
         if (authoriser != null) {
             authoriser.invalidate();
+            policiesChanged();
         }
+    }
+
+    /**
+     * A number that grows whenever what this cell's policies decide may have changed: a policy
+     * created, enabled or disabled, given an event, a condition or an action, attached or detached
+     * (so also withdrawn), an authorisation policy changed, or, with authorisation on, domain
+     * membership or the end of the boot phase. Equal numbers mean the same policies, configured
+     * the same way; the decisions may still differ where a condition reads other state.
+     */
+    public long policyVersion() {
+        return policyVersion;
+    }
+
+    /** Notes a change that may change what the policies decide. */
+    void policiesChanged() {
+        policyVersion++;
     }
 
     long nextAttachOrder() {
@@ -314,6 +335,7 @@ public final class CellRuntime {
     }
 
     void created(ManagedObject policy) {
+        policiesChanged();
         for (Consumer<? super ManagedObject> listener : List.copyOf(creationListeners)) {
             listener.accept(policy);
         }

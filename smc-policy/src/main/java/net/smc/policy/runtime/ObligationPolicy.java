@@ -77,12 +77,14 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
         for (ManagedObject node : attachedTo) {
             node.attach(this);
         }
+        runtime.policiesChanged();
         return newTemplate;
     }
 
     @Op("condition:")
     public ObligationPolicy condition(Block condition) {
         conditions.add(condition);
+        runtime.policiesChanged();
         return this;
     }
 
@@ -90,6 +92,7 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
     public ObligationPolicy action(Block action) {
         actions.add(action);
         wholeEvent.add(false);
+        runtime.policiesChanged();
         return this;
     }
 
@@ -98,11 +101,15 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
     public ObligationPolicy eaction(Block action) {
         actions.add(action);
         wholeEvent.add(true);
+        runtime.policiesChanged();
         return this;
     }
 
     @Op("active:")
     public boolean active(boolean on) {
+        if (on != active) {
+            runtime.policiesChanged();
+        }
         active = on;
         if (on && attachedTo.isEmpty()) {
             attach(runtime.root());
@@ -125,6 +132,7 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
             if (template != null) {
                 node.attach(this);
             }
+            runtime.policiesChanged();
         }
         return this;
     }
@@ -132,8 +140,11 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
     /** Detaches the policy from a node (an extension of Ponder2's selectors). */
     @Op("detach:")
     public ObligationPolicy detach(ManagedObject node) {
-        if (attachedTo.remove(node) && template != null) {
-            node.detach(this, template);
+        if (attachedTo.remove(node)) {
+            if (template != null) {
+                node.detach(this, template);
+            }
+            runtime.policiesChanged();
         }
         return this;
     }

@@ -141,9 +141,22 @@ final class ScaledTeam {
         public long sendMicros(Address at, Address to, byte[] data) {
             datagrams++;
             bytes += data.length;
-            int type = data.length > 3 ? data[3] & 0xFF : 0;   // the frame's type byte (wire-format.md)
+            int type = typeOf(data);
             datagramsByType[type]++;
             bytesByType[type] += data.length;
+            return 0;
+        }
+
+        /**
+         * The frame's type byte (wire-format.md: after the magic "SM" and the version), found in a
+         * datagram sealed by the ideal authentication (an 8-byte counter first) or not; 0 if neither.
+         */
+        private int typeOf(byte[] data) {
+            for (int at : new int[] {0, 8}) {
+                if (data.length > at + 3 && data[at] == 'S' && data[at + 1] == 'M') {
+                    return data[at + 3] & 0xFF;
+                }
+            }
             return 0;
         }
 

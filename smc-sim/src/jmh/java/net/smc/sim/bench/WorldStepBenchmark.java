@@ -1,5 +1,7 @@
 package net.smc.sim.bench;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -13,6 +15,7 @@ import net.smc.sim.arena.Arena;
 import net.smc.sim.arena.ArenaReader;
 import net.smc.sim.world.SimWorld;
 import org.dyn4j.geometry.AABB;
+import org.openjdk.jmh.annotations.AuxCounters;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Level;
@@ -22,6 +25,7 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.infra.BenchmarkParams;
 
 /**
  * One 20 ms world step, run by the scheduler, with every robot's control loop reading all of its
@@ -29,7 +33,9 @@ import org.openjdk.jmh.annotations.State;
  * wandering. Throughput in steps per second times 0.02 is simulated seconds per wall second:
  * {@code rescue} has the paper's 3 robots, {@code house} 50 robots in the house arena, spread
  * through its rooms (a steady state of robots driving about; {@code layout=lobby} packs them into
- * the lobby instead, a pile-up that lasts the whole run).
+ * the lobby instead, a pile-up that lasts the whole run). The secondary result
+ * {@code simulatedPerCpu} is simulated seconds per CPU second of the benchmark thread: what the
+ * simulation costs, whatever else the machine is doing ({@link CpuRate}).
  *
  * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-f 1 -wi 2 -i 3 -w 1s -r 1s WorldStepBenchmark'</pre>
  */
@@ -116,8 +122,44 @@ public class WorldStepBenchmark {
     }
 
     @Benchmark
-    public double step() {
+    public double step(CpuRate rate) {
         scheduler.runFor(world.stepMillis());
+        rate.ran(world.stepMillis());
         return sink;
+    }
+
+    /**
+     * Simulated seconds per CPU second of the thread that runs the simulation, over each
+     * measurement iteration. JMH adds such counters up over the iterations, so each iteration's
+     * value is divided by their number: the result is the mean.
+     */
+    @State(Scope.Thread)
+    @AuxCounters(AuxCounters.Type.EVENTS)
+    public static class CpuRate {
+        private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+        public double simulatedPerCpu;
+        private long simulatedMillis;
+        private long startNanos;
+        private int iterations;
+
+        @Setup(Level.Trial)
+        public void count(BenchmarkParams params) {
+            iterations = Math.max(1, params.getMeasurement().getCount());
+        }
+
+        @Setup(Level.Iteration)
+        public void reset() {
+            simulatedMillis = 0;
+            startNanos = THREADS.getCurrentThreadCpuTime();
+        }
+
+        /** Called after each operation with the simulated time it covered. */
+        public void ran(long millis) {
+            simulatedMillis += millis;
+            long cpu = THREADS.getCurrentThreadCpuTime() - startNanos;
+            if (cpu > 0) {
+                simulatedPerCpu = simulatedMillis / 1e3 / (cpu / 1e9) / iterations;
+            }
+        }
     }
 }

@@ -10,6 +10,9 @@ public interface RadioGround {
     /** The world's step count: positions change only from one step to the next. */
     long steps();
 
+    /** The world's step period, ms of mission time. */
+    int stepMillis();
+
     /** How many nodes there are now; it grows when robots are added. */
     int nodeCount();
 

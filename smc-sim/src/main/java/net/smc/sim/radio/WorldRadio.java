@@ -20,8 +20,16 @@ import net.smc.sim.hardware.Radio;
  * the way and loss rising with distance ({@link RadioSettings}). As a {@link RadioModel} it lets
  * the in-memory network carry a datagram between two bound addresses with the link's quality as
  * probability, drawn from a generator seeded by the world's seed (the network asks in a
- * deterministic order, so runs replay). A disabled robot's radio is silent both ways. Links appear
- * and break as robots move: qualities are computed afresh for each step, and cached within it.
+ * deterministic order, so runs replay). A disabled robot's radio is silent both ways, from the
+ * moment it is disabled.
+ *
+ * <p>Links appear and break as robots move, at the refresh rate of the settings
+ * ({@link RadioSettings#refreshMillis()}, 100 ms by default): at the end of every world step whose
+ * count is a multiple of the refresh period in steps, the radio takes every node's position, and
+ * until the next refresh every link's quality is that of those positions. A pair's quality is
+ * computed when first asked after a refresh that moved one of its ends, and kept otherwise, so
+ * links between still robots cost nothing; with a refresh of one step the model is the
+ * per-step one.
  *
  * <pre>{@code
  * network.setRadio(world.radio());
@@ -34,15 +42,22 @@ public final class WorldRadio implements RadioModel {
     private final RandomGenerator random;
     private final Map<Address, String> nodes = new HashMap<>();
     private final Map<String, Address> addresses = new HashMap<>();
-    // Robots and stations are numbered as first seen; a pair's quality is kept for the step in a
-    // capacity x capacity table, valid where computedIn holds the current generation.
+    private final int refreshSteps;
+    // Robots and stations are numbered as first seen. Their positions at the last refresh are in
+    // x/y (placed: known); movedIn holds the refresh (generation) at which a node last moved. A
+    // pair's quality is kept in a capacity x capacity table, valid while computedIn is no older
+    // than the movedIn of either end.
     private final Map<String, Integer> numbers = new HashMap<>();
     private final List<String> ids = new ArrayList<>();
     private RadioGround.Node[] located = new RadioGround.Node[0];
+    private double[] x = new double[0];
+    private double[] y = new double[0];
+    private boolean[] placed = new boolean[0];
+    private boolean[] off = new boolean[0];   // radio off: read when first located, then told (switchedOff)
+    private long[] movedIn = new long[0];
     private int capacity;
     private double[] cache = new double[0];
     private long[] computedIn = new long[0];
-    private long cachedStep = -1;
     private long generation;
     private int[] sorted;
     private int sortedNodes;
@@ -52,6 +67,22 @@ public final class WorldRadio implements RadioModel {
         this.world = Objects.requireNonNull(ground, "ground");
         this.settings = Objects.requireNonNull(settings, "settings");
         this.random = RandomGeneratorFactory.of("L64X128MixRandom").create(seed ^ 0x7AD10L);
+        this.refreshSteps = Math.max(1, (int) Math.round(settings.refreshMillis() / (double) ground.stepMillis()));
+    }
+
+    /**
+     * Told by the world at the end of each step: on every {@code refreshSteps}-th step the radio
+     * takes the nodes' positions afresh.
+     */
+    public void stepped() {
+        if (world.steps() % refreshSteps == 0) {
+            refresh();
+        }
+    }
+
+    /** The refresh period in world steps. */
+    public int refreshSteps() {
+        return refreshSteps;
     }
 
     /**
@@ -131,30 +162,65 @@ public final class WorldRadio implements RadioModel {
         return new Neighbours(keys, values, n);
     }
 
-    /** The quality between two numbered nodes, computed once per step and pair. */
+    /** The quality between two numbered nodes, computed once per refresh that moved one of them. */
     private double quality(int na, int nb) {
-        if (cachedStep != world.steps()) {
-            cachedStep = world.steps();
-            generation++;
+        if (generation == 0) {
+            refresh();   // asked before the first step
+        }
+        if (!on(na) || !on(nb) || !placed(na) || !placed(nb)) {
+            return 0;
         }
         int lo = Math.min(na, nb);
         int hi = Math.max(na, nb);
         int key = lo * capacity + hi;
-        if (computedIn[key] != generation) {
+        if (computedIn[key] < Math.max(movedIn[lo], movedIn[hi])) {
             cache[key] = compute(lo, hi);
             computedIn[key] = generation;
         }
         return cache[key];
     }
 
-    private double compute(int a, int b) {
-        if (!located(a) || !located(b) || !on(a) || !on(b)) {
-            return 0;
+    /** Takes every node's position now; a node that moved invalidates its pairs. */
+    private void refresh() {
+        generation++;
+        sortedNodes();   // numbers robots added since the last refresh
+        for (int n = 0; n < ids.size(); n++) {
+            RadioGround.Node at = node(n);
+            if (at != null) {
+                place(n, at);
+            }
         }
-        double ax = x(a);
-        double ay = y(a);
-        double bx = x(b);
-        double by = y(b);
+    }
+
+    private void place(int n, RadioGround.Node at) {
+        double nx = at.x();
+        double ny = at.y();
+        if (!placed[n] || nx != x[n] || ny != y[n]) {
+            x[n] = nx;
+            y[n] = ny;
+            placed[n] = true;
+            movedIn[n] = generation;
+        }
+    }
+
+    /** Whether the node has a position; one first seen between refreshes is placed where it is then. */
+    private boolean placed(int n) {
+        if (!placed[n]) {
+            RadioGround.Node at = node(n);
+            if (at == null) {
+                return false;
+            }
+            place(n, at);
+        }
+        return true;
+    }
+
+    /** The open-air quality of the link between two placed nodes, walls counted; 0 below the minimum. */
+    private double compute(int a, int b) {
+        double ax = x[a];
+        double ay = y[a];
+        double bx = x[b];
+        double by = y[b];
         double range = settings.range();
         double d2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
         if (d2 > range * range * (1 + 1e-9)) {
@@ -197,9 +263,21 @@ public final class WorldRadio implements RadioModel {
         return sorted;
     }
 
+    /**
+     * Told by the world that the radio of robot {@code nodeId} went off (the robot was disabled):
+     * its links are gone from now on, not from the next refresh.
+     */
+    public void switchedOff(String nodeId) {
+        int n = number(nodeId);   // may grow the tables: number first
+        off[n] = true;
+    }
+
+    /** Whether the node's radio is on; an id the world does not know (yet) counts as on. */
     private boolean on(int node) {
-        RadioGround.Node at = node(node);
-        return at == null || at.radioOn();
+        if (located[node] == null) {
+            node(node);   // first sight of it in the world: reads whether its radio is on
+        }
+        return !off[node];
     }
 
     /** The robot or station numbered {@code node}, or null for an unknown id. */
@@ -207,21 +285,16 @@ public final class WorldRadio implements RadioModel {
         RadioGround.Node at = located[node];
         if (at == null) {
             at = world.node(ids.get(node));   // an id first seen before its robot was added
-            located[node] = at;
+            locate(node, at);
         }
         return at;
     }
 
-    private boolean located(int node) {
-        return node(node) != null;
-    }
-
-    private double x(int node) {
-        return located[node].x();
-    }
-
-    private double y(int node) {
-        return located[node].y();
+    private void locate(int node, RadioGround.Node at) {
+        located[node] = at;
+        if (at != null && !at.radioOn()) {
+            off[node] = true;
+        }
     }
 
     private int number(String id) {
@@ -235,7 +308,7 @@ public final class WorldRadio implements RadioModel {
         }
         numbers.put(id, n);
         ids.add(id);
-        located[n] = world.node(id);
+        locate(n, world.node(id));
         return n;
     }
 
@@ -243,6 +316,11 @@ public final class WorldRadio implements RadioModel {
         int old = capacity;
         capacity = Math.max(16, 2 * old);
         located = Arrays.copyOf(located, capacity);
+        x = Arrays.copyOf(x, capacity);
+        y = Arrays.copyOf(y, capacity);
+        placed = Arrays.copyOf(placed, capacity);
+        off = Arrays.copyOf(off, capacity);
+        movedIn = Arrays.copyOf(movedIn, capacity);
         double[] oldCache = cache;
         long[] oldComputed = computedIn;
         cache = new double[capacity * capacity];

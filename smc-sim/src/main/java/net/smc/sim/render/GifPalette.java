@@ -1,12 +1,8 @@
 package net.smc.sim.render;
 
 import java.awt.Color;
-import java.awt.image.BufferedImage;
-import java.awt.image.IndexColorModel;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * The 256 colours of the GIF frames: every colour of the {@link Palette} exactly, then a 6x6x6
@@ -14,9 +10,13 @@ import java.util.Map;
  * dithering, so the flat floor stays flat and the film compresses well.
  */
 final class GifPalette {
-    private final IndexColorModel model;
+    private static final int CACHE_BITS = 15;
     private final int[] rgb;
-    private final Map<Integer, Byte> nearest = new HashMap<>();
+    // the colours matched so far, by open addressing: colour, its index, whether the slot is used
+    private final int[] cachedColour = new int[1 << CACHE_BITS];
+    private final byte[] cachedIndex = new byte[1 << CACHE_BITS];
+    private final boolean[] cachedSet = new boolean[1 << CACHE_BITS];
+    private int cached;
 
     GifPalette() {
         List<Integer> colours = new ArrayList<>();
@@ -44,57 +44,69 @@ final class GifPalette {
             colours.add(0xFF000000);
         }
         rgb = colours.stream().limit(256).mapToInt(Integer::intValue).toArray();
-        model = new IndexColorModel(8, rgb.length, rgb, 0, false, -1, java.awt.image.DataBuffer.TYPE_BYTE);
     }
 
-    /** The colours as a GIF {@code LocalColorTable} metadata node (the writer's default table is not this one). */
-    javax.imageio.metadata.IIOMetadataNode colourTable() {
-        javax.imageio.metadata.IIOMetadataNode table = new javax.imageio.metadata.IIOMetadataNode("LocalColorTable");
-        table.setAttribute("sizeOfLocalColorTable", Integer.toString(rgb.length));
-        table.setAttribute("sortFlag", "FALSE");
-        for (int i = 0; i < rgb.length; i++) {
-            javax.imageio.metadata.IIOMetadataNode entry = new javax.imageio.metadata.IIOMetadataNode("ColorTableEntry");
-            entry.setAttribute("index", Integer.toString(i));
-            entry.setAttribute("red", Integer.toString(rgb[i] >> 16 & 0xFF));
-            entry.setAttribute("green", Integer.toString(rgb[i] >> 8 & 0xFF));
-            entry.setAttribute("blue", Integer.toString(rgb[i] & 0xFF));
-            table.appendChild(entry);
-        }
-        return table;
+    /** The 256 colours, 0xRRGGBB (alpha bits set). */
+    int[] colours() {
+        return rgb.clone();
     }
 
-    /** {@code image} in these colours. */
-    BufferedImage map(BufferedImage image) {
-        BufferedImage out = new BufferedImage(image.getWidth(), image.getHeight(), BufferedImage.TYPE_BYTE_INDEXED, model);
-        byte[] data = ((java.awt.image.DataBufferByte) out.getRaster().getDataBuffer()).getData();
-        int width = image.getWidth();
-        for (int y = 0; y < image.getHeight(); y++) {
-            for (int x = 0; x < width; x++) {
-                data[y * width + x] = index(image.getRGB(x, y) | 0xFF000000);
+    /**
+     * The index of the nearest colour for every pixel of {@code pixels} (0xRRGGBB, alpha ignored),
+     * into {@code out}. Not thread-safe: it keeps the colours it has matched.
+     */
+    void indices(int[] pixels, byte[] out) {
+        int last = ~pixels[0];   // not equal to the first pixel
+        byte lastIndex = 0;
+        for (int i = 0; i < pixels.length; i++) {
+            int argb = pixels[i] | 0xFF000000;
+            if (argb != last) {
+                last = argb;
+                lastIndex = index(argb);
             }
+            out[i] = lastIndex;
         }
-        return out;
     }
 
     private byte index(int argb) {
-        Byte known = nearest.get(argb);
-        if (known == null) {
-            int best = 0;
-            long bestDistance = Long.MAX_VALUE;
-            for (int i = 0; i < rgb.length; i++) {
-                int dr = (argb >> 16 & 0xFF) - (rgb[i] >> 16 & 0xFF);
-                int dg = (argb >> 8 & 0xFF) - (rgb[i] >> 8 & 0xFF);
-                int db = (argb & 0xFF) - (rgb[i] & 0xFF);
-                long d = 3L * dr * dr + 4L * dg * dg + 2L * db * db;
-                if (d < bestDistance) {
-                    bestDistance = d;
-                    best = i;
-                }
+        int slot = (argb * 0x9E3779B1) >>> (32 - CACHE_BITS);
+        while (true) {
+            if (cachedColour[slot] == argb && cachedSet[slot]) {
+                return cachedIndex[slot];
             }
-            known = (byte) best;
-            nearest.put(argb, known);
+            if (!cachedSet[slot]) {
+                break;
+            }
+            slot = (slot + 1) & (cachedColour.length - 1);
         }
-        return known;
+        if (cached >= cachedColour.length / 2) {
+            // more distinct colours than antialiasing makes in practice: start the cache afresh
+            java.util.Arrays.fill(cachedSet, false);
+            cached = 0;
+            return index(argb);
+        }
+        byte best = nearest(argb);
+        cachedColour[slot] = argb;
+        cachedIndex[slot] = best;
+        cachedSet[slot] = true;
+        cached++;
+        return best;
+    }
+
+    private byte nearest(int argb) {
+        int best = 0;
+        long bestDistance = Long.MAX_VALUE;
+        for (int i = 0; i < rgb.length; i++) {
+            int dr = (argb >> 16 & 0xFF) - (rgb[i] >> 16 & 0xFF);
+            int dg = (argb >> 8 & 0xFF) - (rgb[i] >> 8 & 0xFF);
+            int db = (argb & 0xFF) - (rgb[i] & 0xFF);
+            long d = 3L * dr * dr + 4L * dg * dg + 2L * db * db;
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = i;
+            }
+        }
+        return (byte) best;
     }
 
     private static void add(List<Integer> colours, int argb) {

@@ -1,6 +1,8 @@
 package net.smc.sim.render;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Files;
@@ -8,15 +10,12 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
-
-import javax.imageio.IIOImage;
-import javax.imageio.ImageIO;
-import javax.imageio.ImageTypeSpecifier;
-import javax.imageio.ImageWriter;
-import javax.imageio.metadata.IIOInvalidTreeException;
-import javax.imageio.metadata.IIOMetadata;
-import javax.imageio.metadata.IIOMetadataNode;
-import javax.imageio.stream.ImageOutputStream;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.WorldStepListener;
@@ -28,14 +27,27 @@ import net.smc.sim.world.WorldStepListener;
  * it drops every other frame and samples half as often from then on, so a long run becomes a clip
  * of the same length that plays faster. {@link #write} writes the frames with a fixed delay and
  * loops forever.
+ *
+ * <p>A frame is painted on the simulation's thread (the painter reads the world as it is), and its
+ * pixels are handed to a thread of the recorder's own that maps them to the palette and
+ * compresses them ({@link GifEncoder}) while the simulation runs on; at most
+ * {@value #MAX_PENDING} frames wait for it, so a slow encoder holds the simulation back rather
+ * than fill the memory. The film's bytes do not depend on the timing of that thread.
  */
 public final class GifRecorder implements WorldStepListener {
     private final WorldPainter painter;
     private final Scene scene;
     private final Settings settings;
-    private final List<BufferedImage> frames = new ArrayList<>();
+    /** The most frames painted and not yet compressed. */
+    static final int MAX_PENDING = 8;
+    private final List<Future<byte[]>> frames = new ArrayList<>();
+    // used only on the encoding thread
     private final GifPalette colours = new GifPalette();
+    private final GifEncoder encoder = new GifEncoder();
+    private ExecutorService encoding;
     private int every;
+    private int frameWidth;
+    private int frameHeight;
 
     /**
      * The film's settings.
@@ -83,14 +95,62 @@ public final class GifRecorder implements WorldStepListener {
     public void capture(SimWorld world) {
         if (frames.size() >= settings.maxFrames()) {
             for (int i = frames.size() - 1; i > 0; i -= 2) {
-                frames.remove(i);
+                frames.remove(i).cancel(false);
             }
             every *= 2;
         }
         int width = settings.width();
         int height = height(world, width);
+        if (frames.isEmpty()) {
+            frameWidth = width;
+            frameHeight = height;
+        } else if (width != frameWidth || height != frameHeight) {
+            throw new IllegalStateException("a frame of " + width + "x" + height + " px in a film of " + frameWidth
+                    + "x" + frameHeight + " px; every frame of a film must have the same size");
+        }
         BufferedImage rgb = painter.render(world, scene, width, height);
-        frames.add(colours.map(rgb));
+        int[] pixels = ((DataBufferInt) rgb.getRaster().getDataBuffer()).getData();
+        waitForBacklog();
+        if (encoding == null) {
+            // one thread, in the order of the frames; it ends when idle for a second
+            ThreadPoolExecutor one = new ThreadPoolExecutor(1, 1, 1, TimeUnit.SECONDS, new LinkedBlockingQueue<>(), r -> {
+                Thread t = new Thread(r, "gif-encoder");
+                t.setDaemon(true);
+                return t;
+            });
+            one.allowCoreThreadTimeOut(true);
+            encoding = one;
+        }
+        frames.add(encoding.submit(() -> {
+            byte[] indices = new byte[pixels.length];
+            colours.indices(pixels, indices);
+            return encoder.compress(indices);
+        }));
+    }
+
+    /** Waits until fewer than {@link #MAX_PENDING} frames are still to be compressed. */
+    private void waitForBacklog() {
+        int pending = 0;
+        for (Future<byte[]> f : frames) {
+            pending += f.isDone() ? 0 : 1;
+        }
+        for (int i = 0; i < frames.size() && pending >= MAX_PENDING; i++) {
+            if (!frames.get(i).isDone()) {
+                compressed(frames.get(i));
+                pending--;
+            }
+        }
+    }
+
+    private static byte[] compressed(Future<byte[]> frame) {
+        try {
+            return frame.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while a GIF frame was compressed", e);
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("compressing a GIF frame failed: " + e.getCause(), e.getCause());
+        }
     }
 
     /** The frame height for an arena's shape at {@code width} px: the arena's aspect plus the header. */
@@ -111,62 +171,29 @@ public final class GifRecorder implements WorldStepListener {
 
     /** Writes the film to {@code file}. */
     public void write(Path file) throws IOException {
-        try (OutputStream out = Files.newOutputStream(file)) {
+        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(file))) {
             write(out);
         }
     }
 
-    /** Writes the film as a looping GIF to {@code out} (left open). */
+    /**
+     * Writes the film as a looping GIF to {@code out} (left open), once every frame is compressed;
+     * the last frame shows 25 times as long as the others.
+     */
     public void write(OutputStream out) throws IOException {
         if (frames.isEmpty()) {
             throw new IllegalStateException("no frame captured; the GIF would be empty");
         }
-        ImageWriter writer = ImageIO.getImageWritersByFormatName("gif").next();
-        try (ImageOutputStream stream = ImageIO.createImageOutputStream(out)) {
-            writer.setOutput(stream);
-            writer.prepareWriteSequence(null);
-            for (int i = 0; i < frames.size(); i++) {
-                BufferedImage frame = frames.get(i);
-                IIOMetadata metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(frame), null);
-                timing(metadata, colours.colourTable(), i == frames.size() - 1 ? settings.delayMillis() * 25 : settings.delayMillis(), i == 0);
-                writer.writeToSequence(new IIOImage(frame, null, metadata), null);
-            }
-            writer.endWriteSequence();
-        } finally {
-            writer.dispose();
+        List<byte[]> data = new ArrayList<>(frames.size());
+        for (Future<byte[]> f : frames) {
+            data.add(compressed(f));
         }
-    }
-
-    /** Sets a frame's delay and, on the first frame, the NETSCAPE2.0 extension that loops the film forever. */
-    private static void timing(IIOMetadata metadata, IIOMetadataNode table, int delayMillis, boolean first) throws IIOInvalidTreeException {
-        String format = metadata.getNativeMetadataFormatName();
-        IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(format);
-        IIOMetadataNode control = child(root, "GraphicControlExtension");
-        control.setAttribute("disposalMethod", "none");
-        control.setAttribute("userInputFlag", "FALSE");
-        control.setAttribute("transparentColorFlag", "FALSE");
-        control.setAttribute("delayTime", Integer.toString(Math.max(1, delayMillis / 10)));
-        control.setAttribute("transparentColorIndex", "0");
-        if (first) {
-            IIOMetadataNode app = new IIOMetadataNode("ApplicationExtension");
-            app.setAttribute("applicationID", "NETSCAPE");
-            app.setAttribute("authenticationCode", "2.0");
-            app.setUserObject(new byte[] {1, 0, 0});   // sub-block 1, loop count 0: for ever
-            child(root, "ApplicationExtensions").appendChild(app);
+        int[] delays = new int[data.size()];
+        for (int i = 0; i < delays.length; i++) {
+            int millis = i == delays.length - 1 ? settings.delayMillis() * 25 : settings.delayMillis();
+            delays[i] = Math.max(1, millis / 10);
         }
-        IIOMetadataNode old = child(root, "LocalColorTable");
-        root.replaceChild(table, old);
-        metadata.setFromTree(format, root);
-    }
-
-    private static IIOMetadataNode child(IIOMetadataNode root, String name) {
-        for (int i = 0; i < root.getLength(); i++) {
-            if (root.item(i).getNodeName().equalsIgnoreCase(name)) {
-                return (IIOMetadataNode) root.item(i);
-            }
-        }
-        IIOMetadataNode node = new IIOMetadataNode(name);
-        root.appendChild(node);
-        return node;
+        GifEncoder.write(out, frameWidth, frameHeight, colours.colours(), data, delays);
+        out.flush();
     }
 }

@@ -37,4 +37,8 @@ public interface RobotGround {
 
     /** The radio of the robot called {@code id}, as its cell uses it. */
     Radio radio(String id);
+
+    /** Told when {@code robot} is disabled, its radio silent from now on: the radio stops its links at once. */
+    default void radioOff(SimRobot robot) {
+    }
 }

@@ -175,8 +175,14 @@ public final class SimRobot implements RobotHardware {
     /** Disables the drive and the radio from now on (a fault injected by a scenario). */
     public void disable(String cause) {
         if (disabledBy == null) {
-            disabledBy = Objects.requireNonNull(cause, "cause");
+            disableNow(Objects.requireNonNull(cause, "cause"));
         }
+    }
+
+    private String disableNow(String cause) {
+        disabledBy = cause;
+        ground.radioOff(this);
+        return cause;
     }
 
     /** Whether the radio is on: not disabled. */
@@ -226,13 +232,11 @@ public final class SimRobot implements RobotHardware {
         Pose p = pose();
         for (Hazard hazard : ground.arena().hazards()) {
             if (hazard.disables() && p.distanceTo(hazard.x(), hazard.y()) <= hazard.effect()) {
-                disabledBy = "hazard:" + hazard.id();
-                return disabledBy;
+                return disableNow("hazard:" + hazard.id());
             }
         }
         if (battery.flat()) {
-            disabledBy = "battery";
-            return disabledBy;
+            return disableNow("battery");
         }
         return null;
     }

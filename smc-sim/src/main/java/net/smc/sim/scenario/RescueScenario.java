@@ -43,7 +43,8 @@ import net.smc.sim.world.WorldStepListener;
  * the commander's laptop ({@code cdr}) and the soldier's wearable computer ({@code wearable}) at
  * their stations, two robots ({@code r1}, {@code r2}) at their starts, on the world's radio,
  * with authenticated traffic and policies checked against a default of deny, as deployed. The scenario only wounds the soldier (step (i)); the wearable's
- * policy calls for help (ii), Table I assembles the team (iii), the surveyor's policy drives it
+ * policy calls for help (ii); the commander's policy, which has held its recruiting since the
+ * role was loaded, resumes it on the distress, and Table I assembles the team (iii); the surveyor's policy drives it
  * to the soldier until the hazard stops it (iv), Table II re-assigns its role on the failure
  * timeout with its last position (v), the new surveyor's policy avoids that zone (vi) and
  * delivers assistance (vii).
@@ -138,6 +139,7 @@ public final class RescueScenario implements AutoCloseable {
     private double closest = Double.NaN;
     private String trouble;
     private boolean zoneMarked;
+    private long distressHeard = -1;
 
     /** Makes the team of the scenario from its settings: a simulation, or a live team. */
     @FunctionalInterface
@@ -343,12 +345,12 @@ public final class RescueScenario implements AutoCloseable {
                         reassigned = e.timeMillis();
                         secondSurveyor = e.vehicle();
                     }
-                } else if (firstStop < 0) {
+                } else if (firstStop < 0 && distressHeard >= 0) {
                     step = "iii";
                 }
             }
             case FAILURE, REASSIGNING -> step = firstStop >= 0 ? "v" : "";
-            case ASSIGNED, MISSION_STATE, COMMANDING -> step = firstStop < 0 ? "iii" : "v";
+            case ASSIGNED, MISSION_STATE, COMMANDING -> step = firstStop >= 0 ? "v" : distressHeard >= 0 ? "iii" : "";
             case DISCOVERING, ASSIGNING, HOSTING -> {
                 return;   // protocol detail: not on the timeline
             }
@@ -369,6 +371,9 @@ public final class RescueScenario implements AutoCloseable {
             step = "i";
         } else if (line.startsWith("distress from")) {
             step = "ii";
+            if (vehicle.equals("cdr") && distressHeard < 0) {
+                distressHeard = team.nowMillis();
+            }
         } else if (line.startsWith("heading for the soldier")) {
             step = vehicle.equals(secondSurveyor) ? "vi" : "iv";
         } else if (line.startsWith("took over")) {
@@ -398,6 +403,11 @@ public final class RescueScenario implements AutoCloseable {
 
     public Timeline timeline() {
         return log.timeline();
+    }
+
+    /** When the commander heard the soldier's distress (step (ii)), ms of mission time, or -1. */
+    public long distressHeardMillis() {
+        return distressHeard;
     }
 
     public Scene scene() {

@@ -143,7 +143,10 @@ public final class TeamSimulation implements CellTeam {
         return new TeamSimulationBuilder(mission, repository, seed);
     }
 
-    /** Starts every vehicle's cell, and the adversary if there is one. */
+    /**
+     * Starts every vehicle's cell, and the adversary if there is one: the commanders last, so that
+     * every other vehicle is listening when a commander starts and its first discovery reaches them.
+     */
     @Override
     public void start() {
         if (adversary != null) {
@@ -152,9 +155,11 @@ public final class TeamSimulation implements CellTeam {
         if (world != null) {
             world.start();
         }
-        for (Node n : nodes.values()) {
-            if (n.cell == null) {
-                boot(n, n.spec.commander());
+        for (boolean commanders : new boolean[] {false, true}) {
+            for (Node n : nodes.values()) {
+                if (n.cell == null && n.spec.commander() == commanders) {
+                    boot(n, commanders);
+                }
             }
         }
     }

@@ -51,7 +51,8 @@ import org.dyn4j.world.result.RaycastResult;
  *
  * <p>Each step: every robot's control loops run (robots in the order they were added), the drives
  * turn the wheels' ramped speeds into body velocities, the physics moves every body and resolves
- * collisions, then odometry, batteries and hazards are updated and {@link WorldStepListener}s told.
+ * collisions, then odometry, batteries and hazards are updated, the radio refreshes its links when
+ * due ({@link RadioSettings#refreshMillis()}), and {@link WorldStepListener}s are told.
  * Single-threaded, like the scheduler.
  */
 public final class SimWorld {
@@ -155,6 +156,7 @@ public final class SimWorld {
                 }
             }
         }
+        radio.stepped();
         for (WorldStepListener listener : listeners) {
             listener.stepped(this);
         }
@@ -313,6 +315,11 @@ public final class SimWorld {
         }
 
         @Override
+        public int stepMillis() {
+            return stepMillis;
+        }
+
+        @Override
         public int nodeCount() {
             return order.size() + arena.stations().size();
         }
@@ -385,6 +392,11 @@ public final class SimWorld {
         @Override
         public Radio radio(String id) {
             return radio.view(id);
+        }
+
+        @Override
+        public void radioOff(SimRobot robot) {
+            radio.switchedOff(robot.id());
         }
     }
 

@@ -125,4 +125,81 @@ class WorldRadioTest {
         assertEquals(before, received[0], "a disabled robot's radio is silent");
         assertTrue(network.counters(addressB).droppedByRadio() >= 100);
     }
+
+    @Test
+    void linksHoldBetweenRefreshes_andFollowThePositionsAtEachRefresh() {
+        SimWorld world = world(Worlds.arena(30, 6, "<start id='s0' x='1' y='1'/>"), new SimulationScheduler());
+        SimRobot still = world.addRobot("still", Worlds.start(2, 3, 0), KoalaSpec.koala());
+        SimRobot mover = world.addRobot("mover", Worlds.start(3, 3, 0), KoalaSpec.koala());
+        mover.control(this, (t, dt) -> mover.drive().setWheelSpeeds(0.4, 0.4));
+        int every = world.radio().refreshSteps();
+        assertEquals(5, every, "100 ms of 20 ms steps");
+        int changes = 0;
+        double previous = world.radio().quality("still", "mover");
+        for (int i = 0; i < 500; i++) {
+            world.step();
+            double q = world.radio().quality("still", "mover");
+            double d = Math.hypot(mover.x() - still.x(), mover.y() - still.y());
+            double now = 1 - Math.pow(d / SHORT.range(), 4);
+            if (world.steps() % every == 0) {
+                assertEquals(now, q, 1e-12, "at a refresh the link is that of the positions then");
+            } else {
+                assertEquals(previous, q, 0, "between refreshes the link holds (step " + world.steps() + ")");
+            }
+            changes += q != previous ? 1 : 0;
+            previous = q;
+        }
+        assertTrue(changes >= 500 / every - 2, "the moving robot's link changed at the refreshes: " + changes);
+    }
+
+    @Test
+    void aRefreshOfOneStep_isThePerStepModel() {
+        SimWorld world = SimWorld.builder(Worlds.arena(30, 6, "<start id='s0' x='1' y='1'/><wall x1='6' y1='0' x2='6' y2='4'/>"),
+                new SimulationScheduler()).seed(9).radio(SHORT.withRefreshMillis(1)).build();
+        SimRobot still = world.addRobot("still", Worlds.start(2, 1, 0), KoalaSpec.koala());
+        SimRobot mover = world.addRobot("mover", Worlds.start(3, 5, 0), KoalaSpec.koala());
+        mover.control(this, (t, dt) -> mover.drive().setWheelSpeeds(0.5, 0.5));
+        assertEquals(1, world.radio().refreshSteps());
+        boolean sawWall = false;
+        for (int i = 0; i < 600; i++) {
+            world.step();
+            double d = Math.hypot(mover.x() - still.x(), mover.y() - still.y());
+            int walls = world.wallsBetween(still.x(), still.y(), mover.x(), mover.y());
+            double expected = Math.max(0, 1 - Math.pow(d / SHORT.range(), 4)) * Math.pow(SHORT.wallFactor(), walls);
+            expected = expected < SHORT.minQuality() ? 0 : expected;
+            assertEquals(expected, world.radio().quality("still", "mover"), 1e-12, "step " + world.steps());
+            sawWall |= walls > 0 && expected > 0;
+        }
+        assertTrue(sawWall, "the link passed through the wall at some point");
+    }
+
+    @Test
+    void aDisabledRobotFallsSilentAtOnce_notAtTheNextRefresh() {
+        SimWorld world = world(Worlds.arena(12, 6, "<start id='s0' x='1' y='1'/>"), new SimulationScheduler());
+        SimRobot a = world.addRobot("a", Worlds.start(2, 3, 0), KoalaSpec.koala());
+        world.addRobot("b", Worlds.start(5, 3, 0), KoalaSpec.koala());
+        world.step();
+        assertTrue(world.radio().quality("a", "b") > 0);
+        assertTrue(world.steps() % world.radio().refreshSteps() != 0, "between refreshes");
+        a.disable("test");
+        assertEquals(0, world.radio().quality("a", "b"));
+        assertEquals(0, world.radio().quality("b", "a"));
+        assertTrue(world.radio().view("b").neighbours().isEmpty());
+    }
+
+    @Test
+    void aRobotDisabledBeforeTheRadioFirstHeardOfIt_isSilent() {
+        SimWorld world = world(Worlds.arena(12, 6, "<start id='s0' x='1' y='1'/>"), new SimulationScheduler());
+        world.addRobot("a", Worlds.start(2, 3, 0), KoalaSpec.koala()).disable("test");
+        world.addRobot("b", Worlds.start(5, 3, 0), KoalaSpec.koala());
+        assertEquals(0, world.radio().quality("a", "b"));
+        assertEquals(0, world.radio().quality("b", "a"));
+    }
+
+    @Test
+    void refreshOutOfRange_isRefusedNamingTheSetting() {
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> SHORT.withRefreshMillis(0));
+        assertTrue(e.getMessage().contains("refreshMillis 0") && e.getMessage().contains("1 to 60000"), e.getMessage());
+    }
 }

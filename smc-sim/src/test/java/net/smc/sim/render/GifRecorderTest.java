@@ -78,4 +78,68 @@ class GifRecorderTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new GifRecorder.Settings(10, 1, 200, 50));
         assertTrue(e.getMessage().contains("maxFrames 1"), e.getMessage());
     }
+
+    @Test
+    void encoder_roundTripsThroughImageIO_exactly_forNoiseAndFlatAreasAlike() throws IOException {
+        // random indices fill the LZW table (clear codes, 12-bit codes); flat runs make long strings
+        int width = 301;
+        int height = 97;
+        java.util.Random random = new java.util.Random(5);
+        byte[][] frames = new byte[3][width * height];
+        for (int i = 0; i < frames[0].length; i++) {
+            frames[0][i] = (byte) random.nextInt(256);
+            frames[1][i] = (byte) (i / 1000 % 7);
+            frames[2][i] = (byte) (i % width < 150 ? random.nextInt(4) : 200);
+        }
+        int[] colours = new int[256];
+        for (int i = 0; i < 256; i++) {
+            colours[i] = i * 0x010203 & 0xFFFFFF;
+            colours[i] = colours[i] ^ (i << 16);   // all 256 distinct
+        }
+        GifEncoder encoder = new GifEncoder();
+        java.util.List<byte[]> data = new java.util.ArrayList<>();
+        for (byte[] f : frames) {
+            data.add(encoder.compress(f));
+        }
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        GifEncoder.write(bytes, width, height, colours, data, new int[] {5, 5, 50});
+        ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
+        try (ImageInputStream in = ImageIO.createImageInputStream(new ByteArrayInputStream(bytes.toByteArray()))) {
+            reader.setInput(in);
+            assertEquals(3, reader.getNumImages(true));
+            for (int f = 0; f < 3; f++) {
+                java.awt.image.BufferedImage image = reader.read(f);
+                assertEquals(width, image.getWidth());
+                assertEquals(height, image.getHeight());
+                for (int i = 0; i < frames[f].length; i++) {
+                    int expected = colours[frames[f][i] & 0xFF];
+                    int got = image.getRGB(i % width, i / width) & 0xFFFFFF;
+                    if (expected != got) {
+                        throw new AssertionError("frame " + f + " pixel " + i + ": " + Integer.toHexString(got)
+                                + " instead of " + Integer.toHexString(expected));
+                    }
+                }
+            }
+        } finally {
+            reader.dispose();
+        }
+    }
+
+    @Test
+    void film_isTheSameBytes_forTheSameRun_framesDroppedAndEncodedAsideIncluded() throws IOException {
+        byte[][] films = new byte[2][];
+        for (int run = 0; run < 2; run++) {
+            SimWorld world = movingWorld();
+            GifRecorder gif = new GifRecorder(new WorldPainter(), new Scene("film"), new GifRecorder.Settings(3, 6, 120, 50));
+            world.addListener(gif);
+            for (int i = 0; i < 60; i++) {
+                world.step();
+            }
+            assertTrue(gif.everySteps() > 3, "frames were dropped on the way");
+            ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+            gif.write(bytes);
+            films[run] = bytes.toByteArray();
+        }
+        org.junit.jupiter.api.Assertions.assertArrayEquals(films[0], films[1]);
+    }
 }

@@ -56,6 +56,23 @@ class TeamFaultSweepTest {
         }
     }
 
+    /**
+     * Seed 500,367 (soak): a backup took over as commander while the policies of a role it had been
+     * assigned were still arriving; when they came it took the role, lost the commander's seat while
+     * still acting, and its next beacon had no seat to name. A vehicle that became the acting
+     * commander refuses the role it was taking.
+     */
+    @org.junit.jupiter.api.Test
+    void aBackupThatTookOverRefusesTheRoleItWasTaking() {
+        List<String> faults = new ArrayList<>();
+        try {
+            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 500_367L, FAULT_MILLIS)
+                    .log(faults::add).run();
+        } catch (InvariantViolation v) {
+            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+        }
+    }
+
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {

@@ -275,6 +275,19 @@ class TeamScenariosTest {
     }
 
     @Test
+    void thePoliciesDecide_whileRecruitingIsHeldTheCommanderDiscoversNoOne() {
+        TeamSimulation sim = sim(17, SimVehicle.reconnaissance(2, 1, 0, 0));
+        sim.start();
+        sim.cell("cdr").engine().run("test", "root/discovery hold.");
+        sim.run(10_000);
+        assertTrue(sim.cell("cdr").children().isEmpty(), () -> "children while held: " + sim.cell("cdr").children());
+        assertTrue(sim.trace().stream().noneMatch(l -> l.contains("DISCOVERING")), () -> String.join("\n", sim.trace()));
+        assertTrue(sim.cells().stream().allMatch(c -> c.isActingCommander() || c.seats().isEmpty()));
+        sim.cell("cdr").engine().run("test", "root/discovery resume.");
+        until(sim, () -> state(sim, "cdr").equals(Optional.of(MissionState.RUNNING)), 10_000, "the minimal configuration");
+    }
+
+    @Test
     void aTeamOfTwoHundredCellsFormsAndRecoversFromACrash() {
         List<SimVehicle> team = new ArrayList<>(SimVehicle.reconnaissance(40, 40, 60, 59));
         TeamSimulation sim = sim(16, team);
