@@ -25,12 +25,13 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code smc demo [rescue] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P] [--limit S] [--transport sim|udp]}: runs the
- * paper's rescue (section IV-C) with cells and policies in the simulated world, prints its
- * timeline as it happens, and writes {@code rescue.png} (in the spirit of Fig. 7),
- * {@code rescue.gif} and {@code rescue-timeline.csv} into DIR. Exit 0 when assistance reached the
- * soldier, 1 (with the reason) when not, 2 for a usage error. {@code --transport udp} runs it on real
- * UDP ({@link UdpRescueDemo}).
+ * {@code smc demo [rescue|reconnaissance] [--seed N] [--out DIR] [--gui] [--speed X] [--loss P] [--limit S]
+ * [--transport sim|udp]}: runs the paper's rescue (section IV-C) with cells and policies in the
+ * simulated world, prints its timeline as it happens, and writes {@code rescue.png} (in the spirit
+ * of Fig. 7), {@code rescue.gif} and {@code rescue-timeline.csv} into DIR. Exit 0 when assistance
+ * reached the soldier, 1 (with the reason) when not, 2 for a usage error. {@code --transport udp}
+ * runs it on real UDP ({@link UdpRescueDemo}). {@code reconnaissance} runs the reconnaissance of
+ * section II-A instead ({@link ReconnaissanceDemo}).
  */
 @Command(name = "demo", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "Run a scenario of the paper in the simulated world: its timeline, a picture, a film, a CSV.")
@@ -41,7 +42,7 @@ final class DemoCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Parameters(index = "0", arity = "0..1", defaultValue = "rescue", paramLabel = "SCENARIO",
-            description = "rescue (default); reconnaissance is not available yet")
+            description = "rescue (default) or reconnaissance")
     String scenario;
 
     @Option(names = "--seed", defaultValue = "1", description = "seed of every random draw (default 1)")
@@ -60,8 +61,9 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--loss", defaultValue = "0", paramLabel = "P", description = "extra datagram loss, 0 to below 1 (default 0)")
     double loss;
 
-    @Option(names = "--limit", defaultValue = "180", paramLabel = "SECONDS", description = "mission time after which the run gives up (default 180)")
-    double limit;
+    @Option(names = "--limit", paramLabel = "SECONDS",
+            description = "mission time after which the run gives up (default 180 for the rescue, 900 for the reconnaissance)")
+    Double limit;
 
     @Option(names = "--transport", defaultValue = "sim", paramLabel = "sim|udp",
             description = "sim: the world's simulated radio, on a virtual clock (default); udp: every cell on its own UDP "
@@ -74,13 +76,14 @@ final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (!scenario.equals("rescue")) {
-            throw new ParameterException(spec.commandLine(), scenario.equals("reconnaissance")
-                    ? "scenario 'reconnaissance' is not available yet; run 'rescue'"
-                    : "unknown scenario '" + scenario + "'; scenarios: rescue, reconnaissance");
+        if (!scenario.equals("rescue") && !scenario.equals("reconnaissance")) {
+            throw new ParameterException(spec.commandLine(), "unknown scenario '" + scenario + "'; scenarios: rescue, reconnaissance");
         }
         if (!transport.equals("sim") && !transport.equals("udp")) {
             throw new ParameterException(spec.commandLine(), "--transport '" + transport + "' is unknown; use sim or udp");
+        }
+        if (transport.equals("udp") && scenario.equals("reconnaissance")) {
+            throw new ParameterException(spec.commandLine(), "--transport udp is available for the rescue only; run the reconnaissance with sim");
         }
         if (transport.equals("udp") && gui) {
             throw new ParameterException(spec.commandLine(), "--gui is for --transport sim only; with udp the run writes its files");
@@ -95,15 +98,24 @@ final class DemoCommand implements Callable<Integer> {
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new ParameterException(spec.commandLine(), "--speed " + speed + " must be a positive number");
         }
-        if (!(limit > 0) || limit > 86_400) {
+        if (limit != null && (!(limit > 0) || limit > 86_400)) {
             throw new ParameterException(spec.commandLine(), "--limit " + limit + " must be above 0 and at most 86400 seconds");
         }
         Path dir = io.workingDir().resolve(out);
         Files.createDirectories(dir);
-        if (transport.equals("udp")) {
-            return new UdpRescueDemo(io).run(seed, dir, loss, Math.round(limit * 1000), speed);
+        if (scenario.equals("reconnaissance")) {
+            try {
+                return new ReconnaissanceDemo(io).run(seed, loss, limit == null ? -1 : Math.round(limit * 1000), gui, speed, dir);
+            } catch (IOException e) {
+                io.stderr().println("smc demo: " + e.getMessage());
+                return 1;
+            }
         }
-        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss).withLimit(Math.round(limit * 1000))
+        long limitMillis = Math.round((limit == null ? 180 : limit) * 1000);
+        if (transport.equals("udp")) {
+            return new UdpRescueDemo(io).run(seed, dir, loss, limitMillis, speed);
+        }
+        RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss).withLimit(limitMillis)
                 .withSecurity(TeamSimulation.Security.REAL).withFilm(GifRecorder.Settings.defaults());
         io.stdout().println("rescue of a wounded soldier (section IV-C), seed " + seed + ", loss " + loss
                 + ", signed traffic over the world's radio");

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-/** {@code smc demo}: the rescue's timeline, files and exit status, and its argument errors. */
+/** {@code smc demo}: the rescue's and the reconnaissance's timelines, files and exit status, and the argument errors. */
 class DemoCommandTest {
     private static final Path PROJECT = Path.of(System.getProperty("smc.project.dir", ".."));
 
@@ -84,18 +84,40 @@ class DemoCommandTest {
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
-        "reconnaissance|scenario 'reconnaissance' is not available yet",
         "burglary|unknown scenario 'burglary'",
         "--loss=1.5|--loss 1.5 is out of range",
         "--speed=0|--speed 0.0 must be a positive number",
         "--transport=carrier-pigeon|--transport 'carrier-pigeon' is unknown",
         "--limit=-1|--limit -1.0 must be above 0",
+        "reconnaissance --limit=0|--limit 0.0 must be above 0",
+        "reconnaissance --loss=-0.1|--loss -0.1 is out of range",
+        "reconnaissance --transport=udp|--transport udp is available for the rescue only",
         "--seed=many|many",
     })
-    void badArguments_exitTwo_withTheRule(String argument, String message, @TempDir Path out) {
-        Smc.Result r = Smc.in(PROJECT).run("demo", argument, "--out", out.toString());
+    void badArguments_exitTwo_withTheRule(String arguments, String message, @TempDir Path out) {
+        List<String> args = new java.util.ArrayList<>(List.of("demo"));
+        args.addAll(List.of(arguments.split(" ")));
+        args.addAll(List.of("--out", out.toString()));
+        Smc.Result r = Smc.in(PROJECT).run(args.toArray(String[]::new));
         assertEquals(2, r.status(), r.out() + r.err());
         assertTrue(r.err().contains(message), "expected '" + message + "' in:\n" + r.err());
         assertTrue(!Files.exists(out.resolve("rescue.png")), "nothing is run");
+        assertTrue(!Files.exists(out.resolve("reconnaissance-map.png")), "nothing is run");
+    }
+
+    @Test
+    void reconnaissance_thatRunsOutOfTime_exitsOne_withTheReason_andWritesItsFiles(@TempDir Path out) throws Exception {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "reconnaissance", "--seed", "2", "--limit", "30", "--out", out.toString());
+        assertEquals(1, r.status(), r.out() + r.err());
+        assertTrue(r.out().contains("failed: goal not met within 30.0 s of mission time: "), r.out());
+        assertTrue(r.out().contains("CONFIGURATION") && r.out().contains("minimal: "), "the configurations on the timeline:\n" + r.out());
+        assertTrue(r.out().matches("(?s).*configurations: forming -> minimal -> .*optimal.*"), r.out());
+        BufferedImage png = ImageIO.read(out.resolve("reconnaissance-map.png").toFile());
+        assertEquals(1200, png.getWidth());
+        assertEquals(860, png.getHeight());
+        assertTrue(Files.size(out.resolve("reconnaissance.gif")) > 5_000, "a film of some frames");
+        List<String> csv = Files.readAllLines(out.resolve("reconnaissance-timeline.csv"));
+        assertEquals("time_ms,vehicle,what,detail,step", csv.get(0));
+        assertTrue(csv.stream().anyMatch(l -> l.contains(",ENTERED,")), "the robots' entrances are in the CSV");
     }
 }

@@ -229,6 +229,27 @@ public final class OccupancyGrid {
         }
     }
 
+    /**
+     * Fills this grid's unknown cells from another robot's grid, leaving the cells it knows as they
+     * are: its own observations stand (a robot the other saw in a doorway long ago, say, is not
+     * taken for a wall it has since seen free).
+     *
+     * @throws IllegalArgumentException when the geometries differ
+     */
+    public void fillUnknown(OccupancyGrid other) {
+        if (!sameGeometry(other)) {
+            throw new IllegalArgumentException("cannot fill a grid " + describe() + " from a grid " + other.describe()
+                    + "; the grids must have the same origin, resolution and size");
+        }
+        for (int i = 0; i < known.length; i++) {
+            if (other.known[i] && !known[i]) {
+                known[i] = true;
+                knownCount++;
+                score[i] = other.score[i];
+            }
+        }
+    }
+
     /** A copy. */
     public OccupancyGrid copy() {
         OccupancyGrid g = new OccupancyGrid(minX, minY, cols * resolution, rows * resolution, resolution);

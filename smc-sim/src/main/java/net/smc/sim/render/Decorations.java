@@ -81,6 +81,12 @@ final class Decorations {
         if (crosses) {
             rows.add(new Row(Palette.MARK, "X where a robot stopped"));
         }
+        if (scene.marks().stream().anyMatch(m -> m instanceof Mark.Found)) {
+            rows.add(new Row(Palette.FOUND, "hazard on the team's map"));
+        }
+        if (scene.map() != null) {
+            rows.add(new Row(Palette.UNMAPPED, "not on the team's map"));
+        }
         if (scene.marks().stream().anyMatch(m -> m instanceof Mark.AvoidedZone)) {
             rows.add(new Row(Palette.ZONE, "avoided zone (dashed)"));
         }

@@ -24,4 +24,11 @@ public sealed interface Mark {
             }
         }
     }
+
+    /** A magenta diamond: a hazard as a team reported it (a hazard map's entry). */
+    record Found(double x, double y, String label) implements Mark {
+        public Found {
+            Objects.requireNonNull(label, "label");
+        }
+    }
 }

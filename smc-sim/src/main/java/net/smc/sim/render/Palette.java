@@ -19,6 +19,12 @@ public final class Palette {
     public static final Color SOLDIER = new Color(0x2E6B30);
     public static final Color STATION = new Color(0x37474F);
     public static final Color MARK = new Color(0xE01010);
+    /** A hazard as the team reported it. */
+    public static final Color FOUND = new Color(0xD81B60);
+    /** Floor a map does not know, drawn over the arena. */
+    public static final Color UNMAPPED = new Color(0x50, 0x50, 0x58, 0x9C);
+    /** A cell a map holds occupied. */
+    public static final Color MAPPED_OBSTACLE = new Color(0x1E, 0x3A, 0x8A, 0xB4);
     public static final Color ZONE = new Color(0xC62828);
     public static final Color TEXT = new Color(0x1A1A1A);
     public static final Color IR_HIT = new Color(0xD0, 0x30, 0x30, 0xC0);

@@ -16,6 +16,7 @@ public final class Scene {
     private TrajectoryRecorder trajectories;
     private final List<Mark> marks = new ArrayList<>();
     private Overlays overlays = Overlays.defaults();
+    private net.smc.sim.map.OccupancyGrid map;
 
     public Scene(String title) {
         this.title = Objects.requireNonNull(title, "title");
@@ -46,6 +47,20 @@ public final class Scene {
     public Scene mark(Mark mark) {
         marks.add(Objects.requireNonNull(mark, "mark"));
         return this;
+    }
+
+    /**
+     * A map to draw over the arena (a team's hazard map): unknown cells shaded, occupied ones
+     * tinted; null for none. Read when painting, so it may keep changing.
+     */
+    public Scene map(net.smc.sim.map.OccupancyGrid map) {
+        this.map = map;
+        return this;
+    }
+
+    /** The map drawn over the arena, or null. */
+    public net.smc.sim.map.OccupancyGrid map() {
+        return map;
     }
 
     public Scene overlays(Overlays overlays) {

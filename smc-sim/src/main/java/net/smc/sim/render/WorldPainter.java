@@ -58,6 +58,9 @@ public final class WorldPainter {
         g.setColor(Palette.BACKGROUND);
         g.fill(new Rectangle2D.Double(0, 0, width, height));
         ArenaLayer.paint(g, world.arena(), v, text);
+        if (scene.map() != null) {
+            map(g, scene.map(), v);
+        }
         if (show.cameraCones()) {
             OverlayLayer.cameraCones(g, world, v);
         }
@@ -82,6 +85,11 @@ public final class WorldPainter {
         for (SimRobot robot : robots) {
             if (robot.disabled()) {
                 cross(g, v, robot.x(), robot.y(), Math.max(robot.spec().length(), robot.spec().width()) * 0.6);
+            }
+        }
+        for (Mark mark : scene.marks()) {
+            if (mark instanceof Mark.Found found) {
+                found(g, v, found, text);
             }
         }
         for (Mark mark : scene.marks()) {
@@ -159,6 +167,41 @@ public final class WorldPainter {
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {dash, dash * 0.7f}, 0f));
         g.draw(ArenaLayer.disc(v, zone.x(), zone.y(), r));
         text.label(g, zone.label(), v.x(zone.x()) - r * 0.7, v.y(zone.y()) - r - 4, Palette.ZONE);
+    }
+
+    /** Shades the cells the map does not know and tints the ones it holds occupied. */
+    private static void map(Graphics2D g, net.smc.sim.map.OccupancyGrid map, Viewport v) {
+        double side = v.px(map.resolution());
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c < map.cols(); c++) {
+                Color colour = !map.isKnown(c, r) ? Palette.UNMAPPED : map.isOccupied(c, r) ? Palette.MAPPED_OBSTACLE : null;
+                if (colour != null) {
+                    double x = v.x(map.minX() + c * map.resolution());
+                    double y = v.y(map.minY() + (r + 1) * map.resolution());
+                    g.setColor(colour);
+                    g.fill(new Rectangle2D.Double(x, y, side + 0.5, side + 0.5));
+                }
+            }
+        }
+    }
+
+    /** A filled diamond with a dark edge and its label. */
+    private static void found(Graphics2D g, Viewport v, Mark.Found found, Text text) {
+        double h = Math.max(6, v.px(0.28));
+        double cx = v.x(found.x());
+        double cy = v.y(found.y());
+        Path2D.Double diamond = new Path2D.Double();
+        diamond.moveTo(cx, cy - h);
+        diamond.lineTo(cx + h, cy);
+        diamond.lineTo(cx, cy + h);
+        diamond.lineTo(cx - h, cy);
+        diamond.closePath();
+        g.setColor(Palette.FOUND);
+        g.fill(diamond);
+        g.setColor(Palette.FOUND.darker().darker());
+        g.setStroke(new BasicStroke(1.5f));
+        g.draw(diamond);
+        text.label(g, found.label(), cx + h + 3, cy + h + text.size(), Palette.FOUND.darker());
     }
 
     /** A red X of half-size {@code half} metres centred at (x, y). */

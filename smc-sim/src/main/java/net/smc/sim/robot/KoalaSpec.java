@@ -79,6 +79,12 @@ public record KoalaSpec(double length, double width, double mass, double wheelBa
                 cameraRange, cameraNoise, chemicalRadius, odometryNoise, enduranceMoving, enduranceIdle);
     }
 
+    /** This spec with proximity sensors of another range, m (from the body's edge). */
+    public KoalaSpec withIrRange(double metres) {
+        return new KoalaSpec(length, width, mass, wheelBase, maxSpeed, maxAcceleration, metres, irNoise, cameraFov,
+                cameraRange, cameraNoise, chemicalRadius, odometryNoise, enduranceMoving, enduranceIdle);
+    }
+
     /** This spec with another battery. */
     public KoalaSpec withEndurance(double movingSeconds, double idleSeconds) {
         return new KoalaSpec(length, width, mass, wheelBase, maxSpeed, maxAcceleration, irRange, irNoise, cameraFov,

@@ -164,6 +164,14 @@ public final class SimRobot implements RobotHardware {
         return disabledBy;
     }
 
+    /**
+     * A position fix from outside the robot (positioning beacons, say): the odometry's estimate
+     * becomes the true pose, and dead reckoning goes on from there.
+     */
+    public void positionFix() {
+        odometry.fix(pose());
+    }
+
     /** Disables the drive and the radio from now on (a fault injected by a scenario). */
     public void disable(String cause) {
         if (disabledBy == null) {

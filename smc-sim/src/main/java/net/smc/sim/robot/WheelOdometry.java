@@ -26,6 +26,13 @@ final class WheelOdometry implements Odometry {
         return travelled;
     }
 
+    /** Replaces the estimate by a position fix (the distance travelled goes on). */
+    void fix(Pose pose) {
+        x = pose.x();
+        y = pose.y();
+        heading = pose.heading();
+    }
+
     /** Integrates one step of wheel speeds {@code left}, {@code right} (m/s) over {@code dt} seconds. */
     void advance(double left, double right, double wheelBase, double dt) {
         double v = (left + right) / 2;

@@ -1,7 +1,6 @@
 package net.smc.sim.scenario;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -16,7 +15,6 @@ import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionException;
-import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.policy.api.AuthMode;
 import net.smc.policy.api.PolicyRepository;
@@ -37,7 +35,6 @@ import net.smc.sim.team.TeamSimulationBuilder;
 import net.smc.sim.team.WorldTeam;
 import net.smc.sim.arena.Arena;
 import net.smc.sim.arena.ArenaException;
-import net.smc.sim.arena.ArenaReader;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.WorldStepListener;
 
@@ -130,12 +127,11 @@ public final class RescueScenario implements AutoCloseable {
     private final CellTeam team;
     private final WorldTeam world;
     private final Arena.Hazard hazard;
-    private final Timeline timeline = new Timeline();
     private final TrajectoryRecorder tracks = new TrajectoryRecorder(5);
     private final Scene scene = new Scene("Rescue of a wounded soldier (cf. the paper's Fig. 7)");
     private final Map<String, String> roles = new LinkedHashMap<>();
     private final GifRecorder film;
-    private final Consumer<Timeline.Row> printer;
+    private final ScenarioLog log;
     private long firstStop = -1;
     private long reassigned = -1;
     private String firstSurveyor;
@@ -154,7 +150,7 @@ public final class RescueScenario implements AutoCloseable {
     private RescueScenario(Mission mission, PolicyRepository repository, Arena arena, Settings settings,
                            Consumer<Timeline.Row> printer, TeamMaker maker) throws IOException {
         this.settings = settings;
-        this.printer = printer;
+        this.log = new ScenarioLog(printer);
         this.hazard = arena.hazards().stream().findFirst()
                 .orElseThrow(() -> new IllegalArgumentException("arena '" + arena.name() + "' has no hazard; the rescue needs one"));
         List<SimVehicle> vehicles = List.of(
@@ -218,16 +214,8 @@ public final class RescueScenario implements AutoCloseable {
 
     private static RescueScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer, TeamMaker maker)
             throws IOException, MissionException, ArenaException {
-        PolicyRepository repository = new PolicyRepository(projectDir.resolve("policies"));
-        Path instance = projectDir.resolve("missions/rescue.instance.xml");
-        Path worldFile = projectDir.resolve("missions/worlds/rescue.xml");
-        for (Path p : List.of(projectDir.resolve("policies"), instance, worldFile)) {
-            if (!Files.exists(p)) {
-                throw new IOException(p + " not found; run from the project's folder (it needs policies/ and missions/)");
-            }
-        }
-        Mission mission = new MissionLoader(repository).load(instance);
-        return new RescueScenario(mission, repository, ArenaReader.read(worldFile), settings, printer, maker);
+        ScenarioFiles files = ScenarioFiles.load(projectDir, "rescue.instance.xml", "rescue.xml");
+        return new RescueScenario(files.mission(), files.repository(), files.arena(), settings, printer, maker);
     }
 
     /** Runs the rescue until assistance is delivered, something goes wrong, or the time limit. */
@@ -405,29 +393,16 @@ public final class RescueScenario implements AutoCloseable {
     }
 
     private void row(long millis, String vehicle, String what, String detail, String step) {
-        timeline.record(millis, vehicle, what, detail, step);
-        List<Timeline.Row> rows = timeline.rows();
-        printer.accept(rows.get(rows.size() - 1));
+        log.row(millis, vehicle, what, detail, step);
     }
 
     /** What each live cell's policies reported as errors (a policy denied, a failed send ...), by vehicle. */
     public Map<String, List<String>> diagnostics() {
-        return team.exclusive(this::errors);
-    }
-
-    private Map<String, List<String>> errors() {
-        Map<String, List<String>> out = new LinkedHashMap<>();
-        for (SimVehicle v : team.vehicles()) {
-            Cell c = team.cell(v.id());
-            if (c != null && !c.diagnostics().isEmpty()) {
-                out.put(v.id(), c.diagnostics().stream().map(Object::toString).toList());
-            }
-        }
-        return out;
+        return team.exclusive(() -> ScenarioLog.diagnostics(team));
     }
 
     public Timeline timeline() {
-        return timeline;
+        return log.timeline();
     }
 
     /** When the commander heard the soldier's distress (step (ii)), ms of mission time, or -1. */
@@ -469,8 +444,7 @@ public final class RescueScenario implements AutoCloseable {
 
     /** One timeline row as a line: {@code  12.345 s  r1        STOPPED   (iv) detail}. */
     public static String format(Timeline.Row r) {
-        return String.format(Locale.ROOT, "%8.3f s  %-8s %-14s %-6s %s", r.timeMillis() / 1000.0, r.vehicle(), r.what(),
-                r.step().isEmpty() ? "" : "(" + r.step() + ")", r.detail());
+        return ScenarioLog.format(r);
     }
 
     private static String seconds(long millis) {

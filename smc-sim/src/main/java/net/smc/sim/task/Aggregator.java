@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import net.smc.policy.api.ArrayValue;
 import net.smc.sim.hardware.RobotHardware;
 import net.smc.sim.map.OccupancyGrid;
 
@@ -50,6 +51,14 @@ public final class Aggregator extends RobotTask implements AggregatorI, Handover
     /** Merges a robot's map into the picture ({@link OccupancyGrid#merge}). */
     public void merge(OccupancyGrid other) {
         map.merge(other);
+    }
+
+    @Override
+    public void merge(ArrayValue cells) {
+        java.util.Objects.requireNonNull(cells, "cells");
+        Map<String, Object> state = map.toState();
+        state.put("cells", cells.items());
+        merge(OccupancyGrid.fromState(state));
     }
 
     public OccupancyGrid map() {

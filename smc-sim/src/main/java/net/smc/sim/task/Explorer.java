@@ -13,6 +13,7 @@ import net.smc.sim.hardware.Sighting;
 import net.smc.sim.map.OccupancyGrid;
 import net.smc.sim.map.PathPlanner;
 import net.smc.sim.map.Point;
+import net.smc.sim.map.Zone;
 
 /**
  * Frontier exploration: while it runs it fills the robot's occupancy grid from the infrared ring
@@ -23,6 +24,8 @@ import net.smc.sim.map.Point;
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
+    /** Seconds of driving without moving 5 cm after which the target is given up. */
+    private static final double STALL_SECONDS = 4;
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
@@ -30,10 +33,15 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private final Set<Integer> reportedObstacles = new HashSet<>();
     private final Set<Integer> unreachable = new HashSet<>();
     private final Set<String> sighted = new HashSet<>();
+    private final List<Zone> zones = new java.util.ArrayList<>();
     private boolean exploring;
     private int target = -1;
     private double reported;
     private double backOffUntil = -1;
+    private int sharedKnown = -1;
+    private double stallX = Double.NaN;
+    private double stallY;
+    private double stallSince;
 
     public Explorer(TaskContext context) {
         this(context.hardware(), context.map());
@@ -63,6 +71,39 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         target = -1;
         follower.clear();
         hardware.drive().stop();
+    }
+
+    @Override
+    public void avoid(double x, double y, double radius) {
+        StateValues.finite("Explorer avoid x", x);
+        StateValues.finite("Explorer avoid y", y);
+        if (!(radius > 0) || !Double.isFinite(radius)) {
+            throw new IllegalArgumentException("Explorer avoid: radius " + radius + " must be a positive number of metres");
+        }
+        zones.add(new Zone(x, y, radius));
+        follower.clear();
+        target = -1;
+    }
+
+    /** The zones it keeps out of. */
+    public List<Zone> zones() {
+        return List.copyOf(zones);
+    }
+
+    @Override
+    public void shareMap() {
+        if (map.knownCells() == sharedKnown) {
+            return;
+        }
+        sharedKnown = map.knownCells();
+        @SuppressWarnings("unchecked")
+        List<String> rows = (List<String>) map.toState().get("cells");
+        mapUpdate("mapUpdate", hardware.id(), rows);
+    }
+
+    @Override
+    public void mapUpdate(String name, String uav, List<String> cells) {
+        raise("mapUpdate", name, uav, cells);
     }
 
     @Override
@@ -147,7 +188,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 return;
             }
             Point p = map.centre(next.get() % map.cols(), next.get() / map.cols());
-            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, List.of(), 0);
+            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
             if (path.isPresent()) {
                 target = next.get();
                 follower.follow(path.get(), map.resolution());
@@ -155,21 +196,61 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 unreachable.add(next.get());
             }
         }
-        switch (follower.step()) {
-            case ARRIVED, IDLE -> target = -1;
-            case OBSTRUCTED -> {
+        PathFollower.Status st = follower.step();
+        switch (st) {
+            case ARRIVED, IDLE -> {
+                // Standing on it, the robot saw what it could: a frontier still open from here
+                // (its unknown side hidden from the sensors) is not chosen again.
                 unreachable.add(target);
                 target = -1;
-                backOffUntil = time + 0.5;
             }
-            default -> { }
+            case OBSTRUCTED -> giveUpTarget(time);
+            default -> {
+                if (stalled(time, pose)) {
+                    giveUpTarget(time);
+                }
+            }
         }
+    }
+
+    /** Whether the robot has moved less than 5 cm in the last {@link #STALL_SECONDS} while driving (wedged on a corner, say). */
+    private boolean stalled(double time, Pose pose) {
+        if (Double.isNaN(stallX) || Math.hypot(pose.x() - stallX, pose.y() - stallY) > 0.05) {
+            stallX = pose.x();
+            stallY = pose.y();
+            stallSince = time;
+            return false;
+        }
+        return time - stallSince > STALL_SECONDS;
+    }
+
+    private void giveUpTarget(double time) {
+        unreachable.add(target);
+        target = -1;
+        follower.clear();
+        backOffUntil = time + 0.5;
+        stallX = Double.NaN;
+    }
+
+    /**
+     * Whether an occupied cell touches this one (8-connected): a frontier along a wall mostly
+     * looks into the wall, and chasing it cell by cell costs a trip per cell for nothing.
+     */
+    private boolean besideObstacle(int c, int r) {
+        for (int dr = -1; dr <= 1; dr++) {
+            for (int dc = -1; dc <= 1; dc++) {
+                if ((dr != 0 || dc != 0) && map.inside(c + dc, r + dr) && map.isOccupied(c + dc, r + dr)) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Breadth-first search over cells open to the robot, from its own cell. */
     private Optional<Integer> nearestFrontier(Pose pose) {
         int cols = map.cols();
-        boolean[] closed = planner.closedCells(map, List.of(), 0);
+        boolean[] closed = planner.closedCells(map, zones, 0);
         int startC = Math.max(0, Math.min(cols - 1, map.col(pose.x())));
         int startR = Math.max(0, Math.min(map.rows() - 1, map.row(pose.y())));
         int start = startC + startR * cols;
@@ -181,7 +262,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             int cell = queue.poll();
             int c = cell % cols;
             int r = cell / cols;
-            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell)) {
+            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell) && !besideObstacle(c, r)) {
                 return Optional.of(cell);
             }
             int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};

@@ -1,5 +1,6 @@
 package net.smc.sim.task;
 
+import java.util.List;
 import net.smc.core.task.Attr;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
@@ -16,6 +17,20 @@ public interface ExplorerI {
     /** Stops exploring and the robot with it; the map keeps being filled while the task runs. */
     @Op("halt")
     void halt();
+
+    /**
+     * Keeps out of a circle from now on: no frontier inside it (grown by the robot's clearance) is
+     * chosen and no path crosses it (a hazard seen from afar, say).
+     */
+    @Op("avoid:y:radius:")
+    void avoid(double x, double y, double radius);
+
+    /**
+     * Raises {@code mapUpdate} with the map as it is now, if it changed since the last share (for
+     * the aggregator, which merges the surveyors' maps).
+     */
+    @Op("shareMap")
+    void shareMap();
 
     /** The share of the map known, 0..1. */
     @Op("exploredFraction")
@@ -36,4 +51,12 @@ public interface ExplorerI {
     /** The camera saw a tagged object for the first time, at {@code (x, y)}. */
     @TaskEvent
     void targetSighted(@Attr("tag") String tag, @Attr("kind") String kind, @Attr("x") double x, @Attr("y") double y);
+
+    /**
+     * The robot's map: {@code cells} is one string per row from the bottom, one character per cell
+     * ({@code ?} unknown, {@code .} free, {@code #} occupied: {@code OccupancyGrid#toState}). The
+     * attributes are those of the architecture's {@code mapUpdate} template (policies/boot/events.p2).
+     */
+    @TaskEvent
+    void mapUpdate(@Attr("name") String name, @Attr("uav") String uav, @Attr("cells") List<String> cells);
 }

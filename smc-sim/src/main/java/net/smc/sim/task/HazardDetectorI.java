@@ -2,6 +2,7 @@ package net.smc.sim.task;
 
 import java.util.List;
 import net.smc.core.task.Attr;
+import net.smc.policy.api.ArrayValue;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
 import net.smc.policy.api.Op;
@@ -13,6 +14,27 @@ public interface HazardDetectorI {
     /** The strength (0..1) at which a sensed hazard is reported (default 0.5). */
     @Op("threshold:")
     void threshold(double strength);
+
+    /**
+     * Goes to confirm a suspected hazard near (x, y): drives towards it (keeping out of the hazards
+     * it has confirmed) until the sensor reads the threshold, or it is there, or no way is left.
+     * Points asked for while one is inspected are queued, nearest first; one within a metre of a
+     * queued point or a confirmed hazard is ignored.
+     */
+    @Op("inspect:y:")
+    void inspect(double x, double y);
+
+    /**
+     * Fills the unknown cells of the robot's own map, on which it plans its way to the points to
+     * inspect, from another's, given as its rows ({@code mapUpdate}'s {@code cells}); what its own
+     * sensors saw stands.
+     */
+    @Op("merge:")
+    void merge(ArrayValue cells);
+
+    /** Whether it is inspecting or has points queued. */
+    @Op("isInspecting")
+    boolean isInspecting();
 
     /** The hazards reported so far, each {@code [tag, kind, x, y]}. */
     @Op("hazards")
@@ -26,4 +48,11 @@ public interface HazardDetectorI {
     @TaskEvent
     void hazardDetected(@Attr("name") String name, @Attr("uav") String uav, @Attr("kind") String kind,
                         @Attr("x") double x, @Attr("y") double y);
+
+    /**
+     * An inspection ended: at (x, y), the point asked for, {@code found} tells whether a hazard was
+     * sensed at the threshold on the way or there.
+     */
+    @TaskEvent
+    void inspected(@Attr("x") double x, @Attr("y") double y, @Attr("found") boolean found);
 }

@@ -87,7 +87,7 @@ public final class LiveTeam implements CellTeam {
         this.clock = new MissionClock(speed);
         this.identities = new FreshIdentities(b.mission.instanceName(), 0, TimeUnit.DAYS.toMillis(365));
         this.udp = UdpSettings.defaults().withBroadcast("127.255.255.255", freePort());
-        this.world = new WorldTeam(this, SimWorld.builder(b.arena, worldTime).seed(b.seed).build(), b.catalog,
+        this.world = new WorldTeam(this, SimWorld.builder(b.arena, worldTime).seed(b.seed).radio(b.radio).robotSpec(b.robotSpec).build(), b.catalog,
                 b.places, b.standalone);
         for (SimVehicle v : b.vehicles) {
             if (vehicles.put(v.id(), v) != null) {
@@ -97,7 +97,7 @@ public final class LiveTeam implements CellTeam {
             addresses.put(v.id(), a);
             world.bind(v.id(), a);
         }
-        world.checkPlaces(vehicles.keySet());
+        world.checkPlaces(vehicles.keySet(), java.util.Set.of());   // no vehicle joins a live team later
     }
 
     /**

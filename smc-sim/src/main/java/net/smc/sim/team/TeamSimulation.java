@@ -125,7 +125,7 @@ public final class TeamSimulation implements CellTeam {
         this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
         this.checking = b.checking;
         this.output = b.output;
-        this.world = b.arena == null ? null : new WorldTeam(this, SimWorld.builder(b.arena, sim).seed(seed).build(),
+        this.world = b.arena == null ? null : new WorldTeam(this, SimWorld.builder(b.arena, sim).seed(seed).radio(b.radio).robotSpec(b.robotSpec).build(),
                 b.catalog, b.places, b.standalone);
         if (world != null) {
             network.setRadio(world.world().radio());
@@ -136,7 +136,7 @@ public final class TeamSimulation implements CellTeam {
         this.adversary = b.adversary ? new Adversary(network, sim, seed,
                 nodes.values().stream().map(n -> n.address).toList()) : null;
         if (world != null) {
-            world.checkPlaces(nodes.keySet());
+            world.checkPlaces(nodes.keySet(), b.arriving);
         }
     }
 

@@ -34,8 +34,11 @@ public final class TeamSimulationBuilder {
     BiConsumer<String, String> output = (vehicle, line) -> { };
     Arena arena;
     TaskCatalog catalog = TaskCatalog.standard();
+    net.smc.sim.radio.RadioSettings radio = net.smc.sim.radio.RadioSettings.defaults();
+    net.smc.sim.robot.KoalaSpec robotSpec = net.smc.sim.robot.KoalaSpec.koala();
     final Map<String, String> places = new LinkedHashMap<>();
     final Map<String, List<String>> standalone = new LinkedHashMap<>();
+    final java.util.Set<String> arriving = new java.util.LinkedHashSet<>();
     net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
     boolean adversary;
     boolean checking = true;
@@ -108,6 +111,18 @@ public final class TeamSimulationBuilder {
         return this;
     }
 
+    /** The world's radio (default {@link net.smc.sim.radio.RadioSettings#defaults()}). */
+    public TeamSimulationBuilder radio(net.smc.sim.radio.RadioSettings settings) {
+        this.radio = Objects.requireNonNull(settings, "radio");
+        return this;
+    }
+
+    /** The build of every robot placed at a start (default {@link net.smc.sim.robot.KoalaSpec#koala()}). */
+    public TeamSimulationBuilder robotSpec(net.smc.sim.robot.KoalaSpec spec) {
+        this.robotSpec = Objects.requireNonNull(spec, "robotSpec");
+        return this;
+    }
+
     /** The tasks of placed vehicles, by name (default {@link TaskCatalog#standard()}). */
     public TeamSimulationBuilder catalog(TaskCatalog catalog) {
         this.catalog = Objects.requireNonNull(catalog, "catalog");
@@ -126,6 +141,17 @@ public final class TeamSimulationBuilder {
             throw new IllegalArgumentException("vehicle '" + vehicle + "' is placed already (at '" + places.get(vehicle) + "')");
         }
         places.put(vehicle, startOrStation);
+        return this;
+    }
+
+    /**
+     * Places a vehicle that is not among the simulation's vehicles yet: its robot stands at the
+     * start {@code start}, switched off (no cell, no tasks), until {@link TeamSimulation#join}
+     * adds the vehicle (robots entering one by one).
+     */
+    public TeamSimulationBuilder placeArriving(String vehicle, String start) {
+        place(vehicle, start);
+        arriving.add(vehicle);
         return this;
     }
 

@@ -33,7 +33,7 @@ import net.smc.sim.world.WorldStepListener;
 public final class WorldTeam {
     /** Map resolution of each vehicle's own occupancy grid, metres: coarse enough that a task state
      *  with the map (the Aggregator's) fits the wire's list limit of 64 elements on a 12 x 8 m arena. */
-    private static final double MAP_RESOLUTION = 0.25;
+    public static final double MAP_RESOLUTION = 0.25;
     /** World steps between two position reports of a robot. */
     private static final int REPORT_EVERY = 5;
 
@@ -84,12 +84,12 @@ public final class WorldTeam {
         });
     }
 
-    void checkPlaces(Set<String> vehicles) {
+    void checkPlaces(Set<String> vehicles, Set<String> arriving) {
         List<String> unplaced = vehicles.stream().filter(v -> !places.containsKey(v)).toList();
         if (!unplaced.isEmpty()) {
             throw new IllegalArgumentException("vehicles " + unplaced + " are not placed in the world; place every vehicle");
         }
-        List<String> unknown = places.keySet().stream().filter(v -> !vehicles.contains(v)).toList();
+        List<String> unknown = places.keySet().stream().filter(v -> !vehicles.contains(v) && !arriving.contains(v)).toList();
         if (!unknown.isEmpty()) {
             throw new IllegalArgumentException("placed vehicles " + unknown + " are not in the simulation");
         }

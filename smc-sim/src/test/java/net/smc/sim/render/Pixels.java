@@ -4,22 +4,22 @@ import java.awt.Color;
 import java.awt.image.BufferedImage;
 
 /** Pixel checks for pictures. */
-final class Pixels {
+public final class Pixels {
     private Pixels() {
     }
 
     /** The colour at the image pixel of world point (x, y). */
-    static Color at(BufferedImage image, Viewport v, double x, double y) {
+    public static Color at(BufferedImage image, Viewport v, double x, double y) {
         return new Color(image.getRGB((int) Math.floor(v.x(x)), (int) Math.floor(v.y(y))));
     }
 
     /** Whether two colours are within {@code tolerance} on every channel. */
-    static boolean near(Color a, Color b, int tolerance) {
+    public static boolean near(Color a, Color b, int tolerance) {
         return Math.abs(a.getRed() - b.getRed()) <= tolerance && Math.abs(a.getGreen() - b.getGreen()) <= tolerance
                 && Math.abs(a.getBlue() - b.getBlue()) <= tolerance;
     }
 
-    static String hex(Color c) {
+    public static String hex(Color c) {
         return String.format("#%06X", c.getRGB() & 0xFFFFFF);
     }
 }

@@ -50,11 +50,13 @@ class TaskCatalogTest {
     @Test
     void explorer_eventsOfTableV() {
         TaskDescription d = catalog.describe("Explorer");
-        assertEquals(List.of("areaExplored", "obstacle", "targetSighted"),
+        assertEquals(List.of("areaExplored", "mapUpdate", "obstacle", "targetSighted"),
                 d.events().stream().map(EventDescription::name).toList());
         assertEquals(List.of(new Attribute("tag", "String"), new Attribute("kind", "String"),
-                new Attribute("x", "double"), new Attribute("y", "double")), d.events().get(2).attributes());
-        assertEquals(List.of("explore", "exploredFraction", "halt", "isExploring"),
+                new Attribute("x", "double"), new Attribute("y", "double")), d.events().get(3).attributes());
+        assertEquals(List.of(new Attribute("name", "String"), new Attribute("uav", "String"), new Attribute("cells", "List")),
+                d.events().get(1).attributes());
+        assertEquals(List.of("avoid", "explore", "exploredFraction", "halt", "isExploring", "shareMap"),
                 d.operations().stream().map(OperationDescription::name).toList());
     }
 
@@ -62,7 +64,11 @@ class TaskCatalogTest {
     void theOtherTasks_carryTheirEvents() {
         assertEquals(List.of(new EventDescription("hazardDetected", List.of(new Attribute("name", "String"),
                 new Attribute("uav", "String"), new Attribute("kind", "String"),
-                new Attribute("x", "double"), new Attribute("y", "double")))), catalog.describe("HazardDetector").events());
+                new Attribute("x", "double"), new Attribute("y", "double"))), new EventDescription("inspected",
+                List.of(new Attribute("x", "double"), new Attribute("y", "double"), new Attribute("found", "boolean")))),
+                catalog.describe("HazardDetector").events());
+        assertTrue(catalog.describe("HazardDetector").operations()
+                .contains(new OperationDescription("inspect", List.of("double", "double"))));
         assertEquals(List.of("hazardAdded"), eventNames("Aggregator"));
         assertTrue(catalog.describe("Aggregator").operations()
                 .contains(new OperationDescription("report", List.of("String", "double", "double"))));

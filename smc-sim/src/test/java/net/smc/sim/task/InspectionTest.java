@@ -1,0 +1,96 @@
+package net.smc.sim.task;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import net.smc.core.transport.sim.SimulationScheduler;
+import net.smc.sim.map.OccupancyGrid;
+import net.smc.sim.robot.KoalaSpec;
+import net.smc.sim.robot.SimRobot;
+import net.smc.sim.world.SimWorld;
+import net.smc.sim.world.Worlds;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The reconnaissance's task additions in a real world: a detector inspects a suspected hazard and
+ * confirms it from outside its radius of effect; the Explorer keeps out of an avoided zone; maps
+ * travel as rows and fill only what the receiver does not know.
+ */
+class InspectionTest {
+    private static final String HAZARD = "<hazard id='h1' kind='chemical' x='6' y='4' radius='0.15' effect='0.6' disables='true'/>"
+            + "<start id='s' x='1' y='4' heading='0'/>";
+
+    @Test
+    void aDetectorInspectsASuspectedHazard_confirmsItFromOutsideItsReach_andSaysSo() throws Exception {
+        SimulationScheduler scheduler = new SimulationScheduler();
+        SimWorld world = SimWorld.builder(Worlds.arena(12, 8, HAZARD), scheduler).seed(4).build();
+        SimRobot robot = world.addRobot("d1", "s");
+        HazardDetector detector = new HazardDetector(robot, new OccupancyGrid(0, 0, 12, 8, 0.25));
+        EventLog log = new EventLog().watch(detector);
+        detector.start();
+        detector.threshold(0.35);
+        detector.inspect(6, 4);
+        detector.inspect(6.5, 4.2);   // within a metre of the queued point: the same suspect
+        assertTrue(detector.isInspecting());
+        world.start();
+        double closest = Double.POSITIVE_INFINITY;
+        for (int s = 0; s < 600 && detector.isInspecting(); s++) {
+            scheduler.runFor(100);
+            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
+        }
+        assertFalse(detector.isInspecting(), "the inspection ended");
+        assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
+        assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        assertEquals(1, detector.hazards().size(), "confirmed once: " + detector.hazards());
+        assertTrue(log.lines.stream().anyMatch(l -> l.startsWith("hazardDetected|hazardDetected|d1|chemical|")), log.lines.toString());
+        assertTrue(log.lines.stream().anyMatch(l -> l.startsWith("inspected|6.0|4.0|true")), log.lines.toString());
+        assertEquals(1, log.lines.stream().filter(l -> l.startsWith("inspected|")).count(), "one inspection: " + log.lines);
+    }
+
+    @Test
+    void theExplorerKeepsOutOfAnAvoidedZone() {
+        SimulationScheduler scheduler = new SimulationScheduler();
+        SimWorld world = SimWorld.builder(Worlds.arena(12, 8, "<start id='s' x='1' y='4' heading='0'/>"), scheduler).seed(5)
+                .robotSpec(KoalaSpec.koala().withIrRange(1.0)).build();
+        SimRobot robot = world.addRobot("s1", "s");
+        Explorer explorer = new Explorer(robot, new OccupancyGrid(0, 0, 12, 8, 0.25));
+        explorer.start();
+        explorer.avoid(6, 4, 1.5);
+        explorer.explore();
+        world.start();
+        double closest = Double.POSITIVE_INFINITY;
+        for (int s = 0; s < 1200; s++) {
+            scheduler.runFor(100);
+            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
+        }
+        assertTrue(explorer.exploredFraction() > 0.5, "it explored: " + explorer.exploredFraction());
+        assertTrue(closest > 1.5, "it kept out of the zone: closest " + closest + " m");
+    }
+
+    @Test
+    void mapsTravelAsRows_theAggregatorMergesThem_andADetectorFillsOnlyWhatItDoesNotKnow() {
+        OccupancyGrid surveyor = new OccupancyGrid(0, 0, 4, 2, 0.5);
+        surveyor.markFree(0.2, 0.2);
+        surveyor.markOccupied(1.2, 0.2);
+        surveyor.markOccupied(1.2, 0.2);
+        surveyor.markOccupied(2.2, 0.2);
+        @SuppressWarnings("unchecked")
+        List<Object> rows = (List<Object>) (List<?>) surveyor.toState().get("cells");
+        SimWorld world = Worlds.world(Worlds.arena(4, 2, "<start id='s' x='1' y='1' heading='0'/>"), 1);
+        SimRobot robot = world.addRobot("r", "s");
+        Aggregator aggregator = new Aggregator(robot, new OccupancyGrid(0, 0, 4, 2, 0.5));
+        aggregator.merge(() -> rows);
+        assertEquals(3, aggregator.map().knownCells());
+        assertTrue(aggregator.map().isOccupied(2, 0));
+        OccupancyGrid own = new OccupancyGrid(0, 0, 4, 2, 0.5);
+        own.markFree(2.2, 0.2);
+        own.markFree(2.2, 0.2);
+        HazardDetector detector = new HazardDetector(robot, own);
+        detector.merge(() -> rows);
+        assertTrue(own.isFree(4, 0), "its own view of a cell stands");
+        assertTrue(own.isOccupied(2, 0) && own.isFree(0, 0), "unknown cells are filled from the other's map");
+    }
+}
