@@ -19,13 +19,21 @@ import net.smc.sim.map.Zone;
  * Frontier exploration: while it runs it fills the robot's occupancy grid from the infrared ring
  * and the odometry, reports new obstacles and camera sightings, and, once told to
  * {@link #explore()}, drives to the nearest reachable frontier (a free cell next to an unknown one,
- * found by breadth-first search over open cells), then the next, until none is left. A frontier
- * it cannot reach is not tried again.
+ * found by breadth-first search over open cells), then the next, until none is left. Paths keep
+ * {@link #CLEARANCE} from occupied cells: on the 0.25 m grid that closes the ring of cells around
+ * each one, which leaves the middle two cells of a 1 m doorway open and keeps the 0.32 m body off
+ * the jambs. Something in the way makes it back off and plan again to the same frontier, up to
+ * {@link #OBSTRUCTIONS} times; a frontier it cannot reach is then not tried again until
+ * {@link #explore()}.
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
     /** Seconds of driving without moving 5 cm after which the target is given up. */
     private static final double STALL_SECONDS = 4;
+    /** Metres kept between the robot's centre and an occupied cell's centre when planning. */
+    static final double CLEARANCE = 0.36;
+    /** How often something in the way may stop the robot on its way to one frontier before it gives that frontier up. */
+    static final int OBSTRUCTIONS = 3;
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
@@ -42,6 +50,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private double stallX = Double.NaN;
     private double stallY;
     private double stallSince;
+    private int obstructed;
 
     public Explorer(TaskContext context) {
         this(context.hardware(), context.map());
@@ -50,7 +59,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     public Explorer(RobotHardware hardware, OccupancyGrid map) {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
-        this.planner = new PathPlanner(hardware.drive().wheelBase() / 2 + 0.05);
+        this.planner = new PathPlanner(CLEARANCE);
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
     }
 
@@ -191,6 +200,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
             if (path.isPresent()) {
                 target = next.get();
+                obstructed = 0;
                 follower.follow(path.get(), map.resolution());
             } else {
                 unreachable.add(next.get());
@@ -204,7 +214,13 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 unreachable.add(target);
                 target = -1;
             }
-            case OBSTRUCTED -> giveUpTarget(time);
+            case OBSTRUCTED -> {
+                if (++obstructed >= OBSTRUCTIONS || !replan(pose)) {
+                    giveUpTarget(time);
+                } else {
+                    backOffUntil = time + 0.5;
+                }
+            }
             default -> {
                 if (stalled(time, pose)) {
                     giveUpTarget(time);
@@ -222,6 +238,14 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             return false;
         }
         return time - stallSince > STALL_SECONDS;
+    }
+
+    /** Plans again to the current target on the map as it is now; whether a way is left. */
+    private boolean replan(Pose pose) {
+        Point p = map.centre(target % map.cols(), target / map.cols());
+        Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
+        path.ifPresent(w -> follower.follow(w, map.resolution()));
+        return path.isPresent();
     }
 
     private void giveUpTarget(double time) {
@@ -247,7 +271,10 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         return false;
     }
 
-    /** Breadth-first search over cells open to the robot, from its own cell. */
+    /**
+     * Breadth-first search over cells open to the robot, from its own cell. From a closed cell (the
+     * robot stands close to something) any cell not occupied may be entered, so that it can leave.
+     */
     private Optional<Integer> nearestFrontier(Pose pose) {
         int cols = map.cols();
         boolean[] closed = planner.closedCells(map, zones, 0);
@@ -273,7 +300,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                     continue;
                 }
                 int next = nc + nr * cols;
-                if (!seen[next] && !closed[next] && !map.isOccupied(nc, nr)) {
+                if (!seen[next] && (!closed[next] || closed[cell]) && !map.isOccupied(nc, nr)) {
                     seen[next] = true;
                     if (map.isKnown(nc, nr)) {
                         queue.add(next);

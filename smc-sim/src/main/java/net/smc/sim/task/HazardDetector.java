@@ -17,9 +17,12 @@ import net.smc.sim.map.Point;
  * threshold, the nearer the hazard's centre.
  *
  * <p>Told to {@link #inspect} a point, it drives there with a {@link Navigator} of its own on the
- * robot's map, keeping out of the hazards it has confirmed, and ends the inspection (the event
- * {@code inspected}) when the sensor reads the threshold, when it is there, or when no way is left.
- * Only the threshold keeps it out of the hazard it looks for: a threshold so high that it is read
+ * robot's map (with the Explorer's clearance, which fits doorways), keeping out of the hazards it has confirmed, and ends the inspection (the event
+ * {@code inspected}) when the sensor reads the threshold or when the suspect is given up. A suspect
+ * is given up only when it has been looked at from {@link #SIDES} sides (each {@link #APPROACH}
+ * from it) without the sensor reading the threshold, or after {@link #ATTEMPTS} tries: a try that
+ * finds no way there is repeated after {@link #RETRY_AFTER} seconds (the map grows meanwhile), from
+ * the next side. Only the threshold keeps it out of the hazard it looks for: a threshold so high that it is read
  * only inside the hazard's radius of effect takes the robot in.
  */
 public final class HazardDetector extends RobotTask implements HazardDetectorI, Handover {
@@ -29,13 +32,34 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
     private static final double APPROACH = 0.8;
     /** The largest radius of the zone kept around a confirmed hazard while driving to another, metres. */
     private static final double CONFIRMED_ZONE = 1.0;
+    /** The sides from which a suspect is looked at before it is taken to be absent. */
+    static final int SIDES = 4;
+    /** How many tries a suspect gets in all (arrivals and blocked drives). */
+    static final int ATTEMPTS = 8;
+    /** Seconds after a blocked try before the suspect is tried again. */
+    static final double RETRY_AFTER = 3;
+    /** How close to the approach point the robot must stand to count as having looked from there, metres. */
+    private static final double THERE = 0.35;
+
+    /**
+     * A point to inspect: {@code bearing} is the direction from the point of the first side to look
+     * from (NaN until the first try), {@code tries} the tries so far, {@code looked} the sides
+     * reached without reading the threshold, {@code notBefore} the time before which it waits.
+     */
+    private record Suspect(Point at, double bearing, int tries, int looked, double notBefore) {
+        Point approach() {
+            double a = bearing + tries * 2 * Math.PI / SIDES;
+            return new Point(at.x() + Math.cos(a) * APPROACH, at.y() + Math.sin(a) * APPROACH);
+        }
+    }
 
     private final Map<String, List<Object>> found = new LinkedHashMap<>();
-    private final List<Point> queue = new ArrayList<>();
+    private final List<Suspect> queue = new ArrayList<>();
     private final Navigator navigator;
     private final OccupancyGrid map;
     private double threshold = 0.5;
-    private Point inspecting;
+    private Suspect inspecting;
+    private Point approach;
     private int foundBefore;
 
     public HazardDetector(TaskContext context) {
@@ -50,7 +74,7 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
     public HazardDetector(RobotHardware hardware, OccupancyGrid map) {
         super(hardware);
         this.map = map;
-        this.navigator = map == null ? null : new Navigator(hardware, map);
+        this.navigator = map == null ? null : new Navigator(hardware, map, Explorer.CLEARANCE);
         if (navigator != null) {
             navigator.margin(0.2);
         }
@@ -63,10 +87,11 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         if (navigator == null) {
             throw new IllegalStateException("HazardDetector of " + hardware.id() + " has no map to drive on; it cannot inspect");
         }
-        if (near(x, y, inspecting) || queue.stream().anyMatch(p -> near(x, y, p)) || nearConfirmed(x, y)) {
+        if (inspecting != null && near(x, y, inspecting.at()) || queue.stream().anyMatch(p -> near(x, y, p.at()))
+                || nearConfirmed(x, y)) {
             return;
         }
-        queue.add(new Point(x, y));
+        queue.add(new Suspect(new Point(x, y), Double.NaN, 0, 0, Double.NEGATIVE_INFINITY));
     }
 
     @Override
@@ -148,28 +173,51 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         }
     }
 
-    /** Works through the queue: the nearest point first, until the sensor reads the threshold or it is there. */
+    /**
+     * Works through the queue: of the points whose wait is over, the least tried and then the
+     * nearest first, until the sensor reads
+     * the threshold, or the point has been looked at from every side, or its tries are used up.
+     */
     private void drive(double time, double dt, Pose pose, boolean sensed) {
         if (inspecting == null) {
-            queue.removeIf(p -> nearConfirmed(p.x(), p.y()));
-        }
-        if (inspecting == null && !queue.isEmpty()) {
-            queue.sort(java.util.Comparator.comparingDouble(p -> p.distanceTo(pose.x(), pose.y())));
-            inspecting = queue.remove(0);
+            queue.removeIf(p -> nearConfirmed(p.at().x(), p.at().y()));
+            Suspect next = null;
+            for (Suspect p : queue) {
+                if (p.notBefore() <= time && (next == null || p.tries() < next.tries() || p.tries() == next.tries()
+                        && p.at().distanceTo(pose.x(), pose.y()) < next.at().distanceTo(pose.x(), pose.y()))) {
+                    next = p;
+                }
+            }
+            if (next == null) {
+                return;
+            }
+            queue.remove(next);
+            if (Double.isNaN(next.bearing())) {
+                next = new Suspect(next.at(), Math.atan2(pose.y() - next.at().y(), pose.x() - next.at().x()), 0, 0, time);
+            }
+            inspecting = next;
             foundBefore = found.size();
-            Point approach = approach(inspecting, pose);
+            approach = next.tries() == 0 && next.at().distanceTo(pose.x(), pose.y()) <= APPROACH
+                    ? new Point(pose.x(), pose.y()) : next.approach();
             navigator.goTo(approach.x(), approach.y());
         }
-        if (inspecting == null) {
-            return;
-        }
-        if (found.size() > foundBefore || sensed && inspecting.distanceTo(pose.x(), pose.y()) < 2.5) {
+        if (found.size() > foundBefore || sensed && inspecting.at().distanceTo(pose.x(), pose.y()) < 2.5) {
             finish(true);
             return;
         }
         navigator.step(time, dt);
         if (!navigator.isMoving()) {
-            finish(false);
+            boolean there = approach.distanceTo(pose.x(), pose.y()) <= THERE;
+            Suspect s = inspecting;
+            Suspect again = new Suspect(s.at(), s.bearing(), s.tries() + 1, s.looked() + (there ? 1 : 0),
+                    there ? time : time + RETRY_AFTER);
+            if (again.looked() >= SIDES || again.tries() >= ATTEMPTS) {
+                finish(false);
+            } else {
+                inspecting = null;
+                navigator.halt();
+                queue.add(again);
+            }
         }
     }
 
@@ -181,28 +229,16 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         if (navigator == null || inspecting == null) {
             return;
         }
-        double d = inspecting.distanceTo(pose.x(), pose.y());
+        Point p = inspecting.at();
+        double d = p.distanceTo(pose.x(), pose.y());
         double radius = d - navigator.margin() - 0.25;
         if (radius > 0.1) {
-            navigator.avoid(inspecting.x(), inspecting.y(), Math.min(radius, CONFIRMED_ZONE));
+            navigator.avoid(p.x(), p.y(), Math.min(radius, CONFIRMED_ZONE));
         }
-    }
-
-    /**
-     * Where to drive to inspect a point: {@link #APPROACH} short of it on the robot's side (the
-     * point itself is where the hazard's body may stand, a cell the planner keeps closed).
-     */
-    private Point approach(Point p, Pose pose) {
-        double d = p.distanceTo(pose.x(), pose.y());
-        if (d <= APPROACH) {
-            return new Point(pose.x(), pose.y());
-        }
-        double f = APPROACH / d;
-        return new Point(p.x() + (pose.x() - p.x()) * f, p.y() + (pose.y() - p.y()) * f);
     }
 
     private void finish(boolean sensed) {
-        Point done = inspecting;
+        Point done = inspecting.at();
         inspecting = null;
         navigator.halt();
         inspected(done.x(), done.y(), sensed);
@@ -219,9 +255,9 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         state.put("hazards", new ArrayList<>(found.values()));
         List<Object> points = new ArrayList<>();
         if (inspecting != null) {
-            points.add(List.of(inspecting.x(), inspecting.y()));
+            points.add(List.of(inspecting.at().x(), inspecting.at().y()));
         }
-        queue.forEach(p -> points.add(List.of(p.x(), p.y())));
+        queue.forEach(p -> points.add(List.of(p.at().x(), p.at().y())));
         state.put("queue", points);
         return state;
     }

@@ -42,10 +42,14 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
     }
 
     public Navigator(RobotHardware hardware, OccupancyGrid map) {
+        this(hardware, map, hardware.drive().wheelBase() / 2 + 0.1);
+    }
+
+    /** A navigator whose paths keep {@code clearance} metres between the robot's centre and occupied cells. */
+    Navigator(RobotHardware hardware, OccupancyGrid map, double clearance) {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
-        double body = hardware.drive().wheelBase() / 2;
-        this.planner = new PathPlanner(body + 0.1);
+        this.planner = new PathPlanner(clearance);
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
     }
 

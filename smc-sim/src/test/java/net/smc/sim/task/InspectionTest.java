@@ -51,6 +51,59 @@ class InspectionTest {
     }
 
     @Test
+    void aDetectorThatFindsNothingWhereItWasSent_looksFromTheOtherSides_untilItSensesTheHazard() throws Exception {
+        SimulationScheduler scheduler = new SimulationScheduler();
+        SimWorld world = SimWorld.builder(Worlds.arena(12, 8, HAZARD), scheduler).seed(4).build();
+        SimRobot robot = world.addRobot("d1", "s");
+        HazardDetector detector = new HazardDetector(robot, new OccupancyGrid(0, 0, 12, 8, 0.25));
+        EventLog log = new EventLog().watch(detector);
+        detector.start();
+        detector.threshold(0.35);
+        // the suspect as a poor camera estimate puts it: 1.6 m north of the hazard; seen from the
+        // robot's side (west) the sensor stays below the threshold, from the south it does not
+        detector.inspect(6, 5.6);
+        world.start();
+        double closest = Double.POSITIVE_INFINITY;
+        for (int s = 0; s < 1200 && detector.isInspecting(); s++) {
+            scheduler.runFor(100);
+            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
+        }
+        assertFalse(detector.isInspecting(), "the inspection ended");
+        assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
+        assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        assertEquals(1, detector.hazards().size(), "found from another side: " + log.lines);
+        assertEquals(List.of("inspected|6.0|5.6|true"), log.lines.stream().filter(l -> l.startsWith("inspected|")).toList());
+    }
+
+    @Test
+    void aDetectorSentWhereNothingIs_looksFromEverySide_thenSaysNothingIsThere() throws Exception {
+        SimulationScheduler scheduler = new SimulationScheduler();
+        SimWorld world = SimWorld.builder(Worlds.arena(12, 8, HAZARD), scheduler).seed(4).build();
+        SimRobot robot = world.addRobot("d1", "s");
+        HazardDetector detector = new HazardDetector(robot, new OccupancyGrid(0, 0, 12, 8, 0.25));
+        EventLog log = new EventLog().watch(detector);
+        detector.start();
+        detector.threshold(0.35);
+        detector.inspect(3, 2);
+        world.start();
+        // the first side faces the robot (north-west of the point); the others are a quarter turn apart
+        java.util.Set<Integer> sides = new java.util.TreeSet<>();
+        for (int s = 0; s < 2400 && detector.isInspecting(); s++) {
+            scheduler.runFor(100);
+            for (int k = 0; k < 4; k++) {
+                double a = Math.toRadians(135 + 90 * k);
+                if (Math.hypot(robot.x() - 3 - 0.8 * Math.cos(a), robot.y() - 2 - 0.8 * Math.sin(a)) < 0.4) {
+                    sides.add(k);
+                }
+            }
+        }
+        assertFalse(detector.isInspecting(), "the inspection ended");
+        assertEquals(java.util.Set.of(0, 1, 2, 3), sides, "looked from the four sides");
+        assertEquals(List.of("inspected|3.0|2.0|false"), log.lines.stream().filter(l -> l.startsWith("inspected|")).toList());
+        assertTrue(detector.hazards().isEmpty());
+    }
+
+    @Test
     void theExplorerKeepsOutOfAnAvoidedZone() {
         SimulationScheduler scheduler = new SimulationScheduler();
         SimWorld world = SimWorld.builder(Worlds.arena(12, 8, "<start id='s' x='1' y='4' heading='0'/>"), scheduler).seed(5)
