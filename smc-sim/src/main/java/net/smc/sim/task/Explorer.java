@@ -22,7 +22,8 @@ import net.smc.sim.map.Zone;
  * found by breadth-first search over open cells), then the next, until none is left. Paths keep
  * {@link #CLEARANCE} from occupied cells: on the 0.25 m grid that closes the ring of cells around
  * each one, which leaves the middle two cells of a 1 m doorway open and keeps the 0.32 m body off
- * the jambs. Something in the way makes it back off and plan again to the same frontier, up to
+ * the jambs; when no frontier is open with that clearance it plans with less: the body's
+ * half-width and 5 cm. Something in the way makes it back off and plan again to the same frontier, up to
  * {@link #OBSTRUCTIONS} times; a frontier it cannot reach is then not tried again until
  * {@link #explore()}.
  */
@@ -37,6 +38,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
+    private final PathPlanner narrow;
+    private PathPlanner current;
     private final PathFollower follower;
     private final Set<Integer> reportedObstacles = new HashSet<>();
     private final Set<Integer> unreachable = new HashSet<>();
@@ -60,6 +63,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
         this.planner = new PathPlanner(CLEARANCE);
+        this.narrow = new PathPlanner(hardware.drive().wheelBase() / 2 + 0.05);
+        this.current = planner;
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
     }
 
@@ -187,24 +192,12 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             target = -1;
         }
         Pose pose = hardware.odometry().pose();
-        while (target < 0) {
-            Optional<Integer> next = nearestFrontier(pose);
-            if (next.isEmpty()) {
-                exploring = false;
-                follower.clear();
-                hardware.drive().stop();
-                areaExplored(map.exploredFraction(), true);
-                return;
-            }
-            Point p = map.centre(next.get() % map.cols(), next.get() / map.cols());
-            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
-            if (path.isPresent()) {
-                target = next.get();
-                obstructed = 0;
-                follower.follow(path.get(), map.resolution());
-            } else {
-                unreachable.add(next.get());
-            }
+        if (target < 0 && !chooseTarget(pose)) {
+            exploring = false;
+            follower.clear();
+            hardware.drive().stop();
+            areaExplored(map.exploredFraction(), true);
+            return;
         }
         PathFollower.Status st = follower.step();
         switch (st) {
@@ -240,10 +233,41 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         return time - stallSince > STALL_SECONDS;
     }
 
+    /**
+     * Picks the nearest frontier open to the robot with the full {@link #CLEARANCE} and, when none
+     * is, with only the body's half-width and 5 cm (a doorway narrowed on the map by a robot
+     * standing in it, say, or by a stray reading); whether one was found.
+     */
+    private boolean chooseTarget(Pose pose) {
+        for (PathPlanner p : List.of(planner, narrow)) {
+            Set<Integer> failed = new HashSet<>();
+            while (true) {
+                Optional<Integer> next = nearestFrontier(pose, p, failed);
+                if (next.isEmpty()) {
+                    break;
+                }
+                Point goal = map.centre(next.get() % map.cols(), next.get() / map.cols());
+                Optional<List<Point>> path = p.plan(map, new Point(pose.x(), pose.y()), goal, zones, 0);
+                if (path.isPresent()) {
+                    target = next.get();
+                    current = p;
+                    obstructed = 0;
+                    follower.follow(path.get(), map.resolution());
+                    return true;
+                }
+                failed.add(next.get());
+                if (p == narrow) {
+                    unreachable.add(next.get());
+                }
+            }
+        }
+        return false;
+    }
+
     /** Plans again to the current target on the map as it is now; whether a way is left. */
     private boolean replan(Pose pose) {
         Point p = map.centre(target % map.cols(), target / map.cols());
-        Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
+        Optional<List<Point>> path = current.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
         path.ifPresent(w -> follower.follow(w, map.resolution()));
         return path.isPresent();
     }
@@ -275,7 +299,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * Breadth-first search over cells open to the robot, from its own cell. From a closed cell (the
      * robot stands close to something) any cell not occupied may be entered, so that it can leave.
      */
-    private Optional<Integer> nearestFrontier(Pose pose) {
+    private Optional<Integer> nearestFrontier(Pose pose, PathPlanner planner, Set<Integer> failed) {
         int cols = map.cols();
         boolean[] closed = planner.closedCells(map, zones, 0);
         int startC = Math.max(0, Math.min(cols - 1, map.col(pose.x())));
@@ -289,7 +313,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             int cell = queue.poll();
             int c = cell % cols;
             int r = cell / cols;
-            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell) && !besideObstacle(c, r)) {
+            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell) && !failed.contains(cell)
+                    && !besideObstacle(c, r)) {
                 return Optional.of(cell);
             }
             int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
