@@ -76,4 +76,41 @@ class ExplorerTest {
         assertEquals(failed.map().knownCells(), replacementMap.knownCells());
         assertTrue(replacementMap.knownCells() > 0);
     }
+
+    /**
+     * The map as a robot standing west of a doorway may hold it: the west room (columns 0-15) known,
+     * the wall in column 15 with a gap in rows 7-9, one cell known beyond the gap (column 16), and an
+     * obstacle at (13, 7) whose ring, with the jambs', closes the way to the gap at the doorway
+     * clearance. The only frontier worth driving to lies beyond the gap.
+     */
+    @Test
+    void aFrontierOpenOnlyWithLessThanTheDoorwayClearance_isStillDrivenTo() {
+        FakeWorld world = new FakeWorld(8, 4);
+        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+        OccupancyGrid map = new OccupancyGrid(0, 0, 8, 4, 0.25);
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c <= 16; c++) {
+                var p = map.centre(c, r);
+                boolean gap = r >= 7 && r <= 9;
+                if (c == 15 && !gap || c == 13 && r == 7) {
+                    for (int i = 0; i < 3; i++) {
+                        map.markOccupied(p.x(), p.y());
+                    }
+                } else if (c < 15 || gap) {
+                    map.markFree(p.x(), p.y());
+                    map.markFree(p.x(), p.y());
+                }
+            }
+        }
+        boolean[] closed = new net.smc.sim.map.PathPlanner(Explorer.CLEARANCE).closedCells(map, List.of(), 0);
+        assertTrue(closed[14 + 8 * map.cols()] && closed[14 + 7 * map.cols()] && closed[14 + 9 * map.cols()],
+                "the doorway clearance closes the way to the gap");
+        Explorer explorer = new Explorer(robot, map);
+        explorer.start();
+        explorer.explore();
+        world.step(0.05);
+        assertTrue(explorer.isExploring(), "a frontier beyond the gap was chosen");
+        world.run(20);
+        assertTrue(robot.x > 3.0, "it drove towards the gap: x " + robot.x);
+    }
 }
