@@ -182,6 +182,12 @@ public final class IdealAuthentication {
             inner.setReceiver(this::onDatagram);
         }
 
+        /** What the network carries less the seal (counter and tag) this endpoint puts round each datagram. */
+        @Override
+        public int datagramCapacity() {
+            return inner.datagramCapacity() - SEAL_BYTES;
+        }
+
         @Override
         public void send(Address to, byte[] data) {
             inner.send(to, seal(localAddress(), to, incarnations.getOrDefault(to, 0), data));

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import net.smc.core.transport.Address;
+import net.smc.core.transport.Transport;
 import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.core.transport.sim.NetworkObserver;
 import net.smc.core.transport.sim.SimulationScheduler;
@@ -53,6 +54,15 @@ class IdealAuthenticationTest {
         endpointA.broadcast("all".getBytes(StandardCharsets.UTF_8));
         scheduler.runFor(100);
         assertEquals(List.of("uav-a:hello", "uav-a:all"), heardByB);
+    }
+
+    /** The seal's 16 bytes come off the capacity the layer above fills: a full datagram fits once sealed. */
+    @Test
+    void aDatagramFillingTheEndpointsCapacity_isSealedAndDelivered() {
+        int capacity = endpointA.datagramCapacity();
+        assertEquals(Transport.MAX_DATAGRAM_BYTES - IdealAuthentication.SEAL_BYTES, capacity);
+        sendAndDeliver("x".repeat(capacity));
+        assertEquals(List.of("uav-a:" + "x".repeat(capacity)), heardByB);
     }
 
     @Test
