@@ -81,6 +81,15 @@ final class Assignee {
         if (back.isEmpty()) {
             return;
         }
+        if (from.equals(st.lastAssignmentFrom) && env.id() < st.lastAssignmentId) {
+            // Sent before an assignment this cell has already taken (or is taking) from the same
+            // manager: the later one is the manager's word. Taking this copy could give this vehicle a
+            // seat the manager no longer owns (it has since dropped the role that owned it) and so
+            // another vehicle's seat. No answer: one matched by role could settle the later offer.
+            ctx.emit(CellEvent.Kind.REJECTED, a.role() + " " + a.identity() + " from " + from
+                    + ": sent before the assignment taken from it since; a late copy");
+            return;
+        }
         String refusal = refusal(from, a);
         if (refusal != null) {
             ctx.emit(CellEvent.Kind.REFUSED, a.role() + " from " + from + ": " + refusal);
@@ -91,6 +100,8 @@ final class Assignee {
             return;
         }
         st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
+        st.lastAssignmentFrom = from;
+        st.lastAssignmentId = env.id();
         Set<String> listed = new LinkedHashSet<>();
         for (PolicyRef ref : a.policies()) {
             listed.add(ref.uri());

@@ -40,6 +40,13 @@ final class TeamState {
     Identity identity;
     /** The role assignment this cell is taking (waiting for its policies), or null. */
     Incoming incoming;
+    /**
+     * The manager of the latest role assignment this cell began to take (Assignee), and that
+     * assignment's message id: a copy of an earlier one from the same manager that arrives after it
+     * (a retransmission that got through late) is no longer what the manager means.
+     */
+    String lastAssignmentFrom;
+    long lastAssignmentId;
     /** This cell's ancestors as its parent last told them: the parent first, the commander last. */
     List<String> ancestors = List.of();
     List<Object> handedOver = List.of();

@@ -73,6 +73,25 @@ class TeamFaultSweepTest {
         }
     }
 
+    /**
+     * Seed 1,007,892 (soak): a surveyor offered a detector's seat and, before the offer got through
+     * the lossy links, lost its role when its commander stepped down; it took the other surveyor's
+     * role in the new commander's team and gave the same vehicle that role's detector seat. The
+     * first offer, still being retransmitted, then arrived: the vehicle took it from its parent as a
+     * move to a better seat, and so held the seat of a detector under the other surveyor. A copy of
+     * an assignment sent before one already taken from the same manager is ignored.
+     */
+    @org.junit.jupiter.api.Test
+    void aLateCopyOfAnEarlierAssignmentIsNotTaken() {
+        List<String> faults = new ArrayList<>();
+        try {
+            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 1_007_892L, FAULT_MILLIS)
+                    .log(faults::add).run();
+        } catch (InvariantViolation v) {
+            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+        }
+    }
+
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
