@@ -115,6 +115,16 @@ final class Membership {
             st.backupRank = -1;
             st.roster = null;
             reportCountdown = 0;
+            // The new commander's echo confirms only the seat the heartbeat names (the primary one).
+            // A further seat the old commander owned may be one the new commander has since given to
+            // another vehicle, or one the old commander gave after the takeover (the new commander
+            // never heard of it): holding it on the strength of that echo would seat two vehicles.
+            // Seats owned by a seat this vehicle keeps stay; the new commander may give the rest again.
+            for (Seat seat : st.seats.size() < 2 ? List.<Seat>of() : List.copyOf(st.seats.subList(1, st.seats.size()))) {
+                if (!ctx.slots().owner(seat).map(st.seats::contains).orElse(false)) {
+                    seating.dropOwnSeat(seat, "adopted by new commander " + from + ", which did not give it");
+                }
+            }
         }
     }
 

@@ -92,6 +92,25 @@ class TeamFaultSweepTest {
         }
     }
 
+    /**
+     * Seed 1,047,146 (soak): a surveyor that had taken the first surveyor's seat from a backup that
+     * took over, and lost it in a partition, went back to the old commander and took that seat
+     * again, with a detector's seat the new commander had meanwhile given to another vehicle. When
+     * the partition healed the new commander's status adopted it, and the echo of its heartbeat
+     * (which names only the surveyor's seat) renewed its lease for the detector's seat too. An
+     * adopted vehicle now gives up the further seats the old commander owned.
+     */
+    @org.junit.jupiter.api.Test
+    void anAdoptedVehicleKeepsOnlyTheSeatItsHeartbeatNames() {
+        List<String> faults = new ArrayList<>();
+        try {
+            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 1_047_146L, FAULT_MILLIS)
+                    .log(faults::add).run();
+        } catch (InvariantViolation v) {
+            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+        }
+    }
+
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
