@@ -23,8 +23,10 @@ class InspectionTest {
     private static final String HAZARD = "<hazard id='h1' kind='chemical' x='6' y='4' radius='0.15' effect='0.6' disables='true'/>"
             + "<start id='s' x='1' y='4' heading='0'/>";
 
-    @Test
-    void aDetectorInspectsASuspectedHazard_confirmsItFromOutsideItsReach_andSaysSo() throws Exception {
+    /** A detector robot d1 at the arena's start, its task started with a threshold of 0.35 and its events logged. */
+    private record Rig(SimulationScheduler scheduler, SimWorld world, SimRobot robot, HazardDetector detector, EventLog log) { }
+
+    private static Rig detectorRig() throws Exception {
         SimulationScheduler scheduler = new SimulationScheduler();
         SimWorld world = SimWorld.builder(Worlds.arena(12, 8, HAZARD), scheduler).seed(4).build();
         SimRobot robot = world.addRobot("d1", "s");
@@ -32,6 +34,17 @@ class InspectionTest {
         EventLog log = new EventLog().watch(detector);
         detector.start();
         detector.threshold(0.35);
+        return new Rig(scheduler, world, robot, detector, log);
+    }
+
+    @Test
+    void aDetectorInspectsASuspectedHazard_confirmsItFromOutsideItsReach_andSaysSo() throws Exception {
+        Rig rig = detectorRig();
+        SimulationScheduler scheduler = rig.scheduler();
+        SimWorld world = rig.world();
+        SimRobot robot = rig.robot();
+        HazardDetector detector = rig.detector();
+        EventLog log = rig.log();
         detector.inspect(6, 4);
         detector.inspect(6.5, 4.2);   // within a metre of the queued point: the same suspect
         assertTrue(detector.isInspecting());
@@ -52,13 +65,12 @@ class InspectionTest {
 
     @Test
     void aDetectorThatFindsNothingWhereItWasSent_looksFromTheOtherSides_untilItSensesTheHazard() throws Exception {
-        SimulationScheduler scheduler = new SimulationScheduler();
-        SimWorld world = SimWorld.builder(Worlds.arena(12, 8, HAZARD), scheduler).seed(4).build();
-        SimRobot robot = world.addRobot("d1", "s");
-        HazardDetector detector = new HazardDetector(robot, new OccupancyGrid(0, 0, 12, 8, 0.25));
-        EventLog log = new EventLog().watch(detector);
-        detector.start();
-        detector.threshold(0.35);
+        Rig rig = detectorRig();
+        SimulationScheduler scheduler = rig.scheduler();
+        SimWorld world = rig.world();
+        SimRobot robot = rig.robot();
+        HazardDetector detector = rig.detector();
+        EventLog log = rig.log();
         // the suspect as a poor camera estimate puts it: 1.6 m north of the hazard; seen from the
         // robot's side (west) the sensor stays below the threshold, from the south it does not
         detector.inspect(6, 5.6);
@@ -77,13 +89,12 @@ class InspectionTest {
 
     @Test
     void aDetectorSentWhereNothingIs_looksFromEverySide_thenSaysNothingIsThere() throws Exception {
-        SimulationScheduler scheduler = new SimulationScheduler();
-        SimWorld world = SimWorld.builder(Worlds.arena(12, 8, HAZARD), scheduler).seed(4).build();
-        SimRobot robot = world.addRobot("d1", "s");
-        HazardDetector detector = new HazardDetector(robot, new OccupancyGrid(0, 0, 12, 8, 0.25));
-        EventLog log = new EventLog().watch(detector);
-        detector.start();
-        detector.threshold(0.35);
+        Rig rig = detectorRig();
+        SimulationScheduler scheduler = rig.scheduler();
+        SimWorld world = rig.world();
+        SimRobot robot = rig.robot();
+        HazardDetector detector = rig.detector();
+        EventLog log = rig.log();
         detector.inspect(3, 2);
         world.start();
         // the first side faces the robot (north-west of the point); the others are a quarter turn apart
