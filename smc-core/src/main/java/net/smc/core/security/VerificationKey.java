@@ -1,64 +1,46 @@
 package net.smc.core.security;
 
-import java.security.GeneralSecurityException;
-import java.security.KeyFactory;
-import java.security.PublicKey;
-import java.security.Signature;
-import java.security.spec.X509EncodedKeySpec;
 import java.util.Arrays;
 import java.util.Base64;
-import java.util.HexFormat;
 import java.util.Objects;
+
+import org.bouncycastle.math.ec.rfc8032.Ed25519;
 
 /**
  * An Ed25519 public key: what a vehicle's credential vouches for, and what a team trusts in its
  * mission authority. Kept as the 32 raw bytes of RFC 8032 (the compact form a credential and a
- * key file carry) and turned into a JDK key once, here.
+ * key file carry) and decoded into a curve point once, here, so each verification starts from it.
  *
  * <p>Immutable; equal when the bytes are equal.
  */
 public final class VerificationKey {
     /** Length of a raw Ed25519 public key. */
     public static final int BYTES = 32;
-    /** The DER prefix that makes 32 raw bytes an X.509 SubjectPublicKeyInfo for Ed25519 (RFC 8410). */
-    private static final byte[] X509_PREFIX = HexFormat.of().parseHex("302a300506032b6570032100");
 
     private final byte[] raw;
-    private final PublicKey key;
+    /** The decoded point, or null when the bytes are no point of the curve (then nothing verifies). */
+    private final Ed25519.PublicPoint point;
     private final KeyId id;
 
-    private VerificationKey(byte[] raw, PublicKey key) {
+    private VerificationKey(byte[] raw) {
         this.raw = raw;
-        this.key = key;
+        this.point = Ed25519.validatePublicKeyPartialExport(raw, 0);
         this.id = KeyId.of(raw);
     }
 
     /**
-     * The key with these 32 raw bytes.
+     * The key with these 32 raw bytes. Bytes that are no point of the curve make a key that
+     * verifies nothing (as a key the JDK accepted but could not use), not an exception: a
+     * credential carrying them is refused when its signature is checked.
      *
-     * @throws IllegalArgumentException when there are not 32 bytes, or the JDK refuses them
+     * @throws IllegalArgumentException when there are not 32 bytes
      */
     public static VerificationKey of(byte[] raw) {
         Objects.requireNonNull(raw, "raw");
         if (raw.length != BYTES) {
             throw new IllegalArgumentException("an Ed25519 public key is " + BYTES + " bytes; got " + raw.length);
         }
-        byte[] encoded = Arrays.copyOf(X509_PREFIX, X509_PREFIX.length + BYTES);
-        System.arraycopy(raw, 0, encoded, X509_PREFIX.length, BYTES);
-        try {
-            return new VerificationKey(raw.clone(), KeyFactory.getInstance("Ed25519").generatePublic(new X509EncodedKeySpec(encoded)));
-        } catch (GeneralSecurityException e) {
-            throw new IllegalArgumentException("not an Ed25519 public key: " + e.getMessage(), e);
-        }
-    }
-
-    /** The key of a JDK Ed25519 public key (whose X.509 form ends with the raw bytes). */
-    static VerificationKey of(PublicKey key) {
-        byte[] encoded = key.getEncoded();
-        if (!"EdDSA".equals(key.getAlgorithm()) && !"Ed25519".equals(key.getAlgorithm()) || encoded.length != X509_PREFIX.length + BYTES) {
-            throw new IllegalArgumentException("not an Ed25519 public key: " + key.getAlgorithm() + ", " + encoded.length + " bytes encoded");
-        }
-        return new VerificationKey(Arrays.copyOfRange(encoded, X509_PREFIX.length, encoded.length), key);
+        return new VerificationKey(raw.clone());
     }
 
     /** The 32 raw bytes (a copy). */
@@ -78,19 +60,17 @@ public final class VerificationKey {
 
     /**
      * Whether the 64 bytes at {@code signature[sigOffset]} are this key's signature of
-     * {@code data[offset, offset + length)}. A malformed signature (or a point the JDK refuses)
-     * is simply not valid: hostile input must not throw.
+     * {@code data[offset, offset + length)}. A malformed signature (or a key that is no point of
+     * the curve) is simply not valid: hostile input must not throw.
      */
     boolean verify(byte[] data, int offset, int length, byte[] signature, int sigOffset) {
-        if (sigOffset < 0 || signature.length - sigOffset < SigningKey.SIGNATURE_BYTES) {
+        if (point == null || sigOffset < 0 || signature.length - sigOffset < SigningKey.SIGNATURE_BYTES
+                || offset < 0 || length < 0 || data.length - offset < length) {
             return false;
         }
         try {
-            Signature verifier = Signature.getInstance("Ed25519");
-            verifier.initVerify(key);
-            verifier.update(data, offset, length);
-            return verifier.verify(signature, sigOffset, SigningKey.SIGNATURE_BYTES);
-        } catch (GeneralSecurityException e) {
+            return Ed25519.verify(signature, sigOffset, point, data, offset, length);
+        } catch (RuntimeException e) {
             return false;
         }
     }
