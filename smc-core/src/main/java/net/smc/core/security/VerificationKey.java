@@ -1,7 +1,10 @@
 package net.smc.core.security;
 
+import java.nio.ByteBuffer;
 import java.util.Arrays;
 import java.util.Base64;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Objects;
 
 import org.bouncycastle.math.ec.rfc8032.Ed25519;
@@ -11,11 +14,26 @@ import org.bouncycastle.math.ec.rfc8032.Ed25519;
  * mission authority. Kept as the 32 raw bytes of RFC 8032 (the compact form a credential and a
  * key file carry) and decoded into a curve point once, here, so each verification starts from it.
  *
- * <p>Immutable; equal when the bytes are equal.
+ * <p>Immutable; equal when the bytes are equal. The keys made lately are kept by their bytes
+ * ({@value #KEPT} of them), so a credential that arrives with every signed datagram of a peer does
+ * not decode its point again each time. A signature found valid is remembered with its bytes
+ * ({@link VerifiedSignatures}): the same signed datagram delivered to several cells of one process
+ * is verified once.
+ *
+ * <p>Thread-safe.
  */
 public final class VerificationKey {
     /** Length of a raw Ed25519 public key. */
     public static final int BYTES = 32;
+    /** Keys kept by their bytes for reuse. */
+    static final int KEPT = 4096;
+
+    private static final Map<ByteBuffer, VerificationKey> RECENT = new LinkedHashMap<>(2 * KEPT, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<ByteBuffer, VerificationKey> eldest) {
+            return size() > KEPT;
+        }
+    };
 
     private final byte[] raw;
     /** The decoded point, or null when the bytes are no point of the curve (then nothing verifies). */
@@ -40,7 +58,18 @@ public final class VerificationKey {
         if (raw.length != BYTES) {
             throw new IllegalArgumentException("an Ed25519 public key is " + BYTES + " bytes; got " + raw.length);
         }
-        return new VerificationKey(raw.clone());
+        ByteBuffer name = ByteBuffer.wrap(raw);
+        synchronized (RECENT) {
+            VerificationKey kept = RECENT.get(name);
+            if (kept != null) {
+                return kept;
+            }
+        }
+        VerificationKey key = new VerificationKey(raw.clone());
+        synchronized (RECENT) {
+            RECENT.put(ByteBuffer.wrap(key.raw), key);
+        }
+        return key;
     }
 
     /** The 32 raw bytes (a copy). */
@@ -68,11 +97,19 @@ public final class VerificationKey {
                 || offset < 0 || length < 0 || data.length - offset < length) {
             return false;
         }
+        if (VerifiedSignatures.SHARED.contains(this, data, offset, length, signature, sigOffset)) {
+            return true;
+        }
+        boolean valid;
         try {
-            return Ed25519.verify(signature, sigOffset, point, data, offset, length);
+            valid = Ed25519.verify(signature, sigOffset, point, data, offset, length);
         } catch (RuntimeException e) {
             return false;
         }
+        if (valid) {
+            VerifiedSignatures.SHARED.add(this, data, offset, length, signature, sigOffset);
+        }
+        return valid;
     }
 
     @Override
