@@ -30,7 +30,14 @@ import org.openjdk.jmh.infra.BenchmarkParams;
  * iteration). Secondary results, means over the iterations: {@code simulatedPerWall}, mission
  * seconds per wall second of the run; {@code simulatedPerCpu}, mission seconds per CPU second of
  * every thread of the process during the run (the film's encoder, the compiler and the garbage
- * collector included), what the run costs whatever else the machine is doing.
+ * collector included), what the run costs whatever else the machine is doing;
+ * {@code simulatedPerThreadCpu}, mission seconds per CPU second of the thread that simulates (the
+ * world, the cells, their signatures), the simulation itself without the JIT compiler, the garbage
+ * collector or the film's encoder.
+ *
+ * <p>{@code rescue} runs with the JVM's default JIT (C1 then C2); {@code rescueC1} with the JIT
+ * stopped at C1, as {@code ./gradlew demo} runs it: in a run of seconds the C2 compiler costs more
+ * CPU than it saves.
  *
  * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-wi 3 -i 5 RescueBenchmark'</pre>
  */
@@ -39,6 +46,8 @@ import org.openjdk.jmh.infra.BenchmarkParams;
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 @Fork(value = 1, jvmArgsAppend = {"-Xmx2g", "-Djava.awt.headless=true"})
 public class RescueBenchmark {
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+
     @Param({"false", "true"})
     public boolean film;
 
@@ -54,6 +63,7 @@ public class RescueBenchmark {
     public static class Rate {
         public double simulatedPerWall;
         public double simulatedPerCpu;
+        public double simulatedPerThreadCpu;
         private int iterations;
 
         @Setup(Level.Trial)
@@ -72,8 +82,19 @@ public class RescueBenchmark {
 
     @Benchmark
     public long rescue(Rate rate) throws Exception {
+        return run(rate);
+    }
+
+    @Benchmark
+    @Fork(value = 1, jvmArgsAppend = {"-Xmx2g", "-Djava.awt.headless=true", "-XX:TieredStopAtLevel=1"})
+    public long rescueC1(Rate rate) throws Exception {
+        return run(rate);
+    }
+
+    private long run(Rate rate) throws Exception {
         long wall = System.nanoTime();
         long cpu = processCpuNanos();
+        long threadCpu = THREADS.getCurrentThreadCpuTime();
         RescueScenario.Settings settings = RescueScenario.Settings.of(1 + seed++);
         if (film) {
             settings = settings.withFilm(GifRecorder.Settings.defaults());
@@ -92,6 +113,7 @@ public class RescueBenchmark {
         double mission = outcome.missionMillis() / 1e3;
         rate.simulatedPerWall += mission / ((System.nanoTime() - wall) / 1e9) / rate.iterations;
         rate.simulatedPerCpu += mission / ((processCpuNanos() - cpu) / 1e9) / rate.iterations;
+        rate.simulatedPerThreadCpu += mission / ((THREADS.getCurrentThreadCpuTime() - threadCpu) / 1e9) / rate.iterations;
         return outcome.missionMillis() + size;
     }
 
@@ -99,7 +121,6 @@ public class RescueBenchmark {
         if (ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os) {
             return os.getProcessCpuTime();
         }
-        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-        return threads.getCurrentThreadCpuTime();
+        return THREADS.getCurrentThreadCpuTime();
     }
 }

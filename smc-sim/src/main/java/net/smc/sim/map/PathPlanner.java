@@ -36,6 +36,14 @@ public final class PathPlanner {
         int rows = grid.rows();
         boolean[] closed = new boolean[cols * rows];
         int reach = (int) Math.ceil(clearance / grid.resolution());
+        int side = 2 * reach + 1;
+        // the offsets within the clearance, worked out once rather than around every occupied cell
+        boolean[] within = new boolean[side * side];
+        for (int dr = -reach; dr <= reach; dr++) {
+            for (int dc = -reach; dc <= reach; dc++) {
+                within[(dc + reach) + (dr + reach) * side] = Math.hypot(dc, dr) * grid.resolution() <= clearance + 1e-9;
+            }
+        }
         for (int r = 0; r < rows; r++) {
             for (int c = 0; c < cols; c++) {
                 if (!grid.isOccupied(c, r)) {
@@ -43,8 +51,7 @@ public final class PathPlanner {
                 }
                 for (int dr = -reach; dr <= reach; dr++) {
                     for (int dc = -reach; dc <= reach; dc++) {
-                        if (grid.inside(c + dc, r + dr)
-                                && Math.hypot(dc, dr) * grid.resolution() <= clearance + 1e-9) {
+                        if (within[(dc + reach) + (dr + reach) * side] && grid.inside(c + dc, r + dr)) {
                             closed[(c + dc) + (r + dr) * cols] = true;
                         }
                     }

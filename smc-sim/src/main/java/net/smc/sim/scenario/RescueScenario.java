@@ -13,6 +13,7 @@ import java.util.function.Consumer;
 
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.CellEvent;
+import net.smc.core.cell.Seat;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionException;
 import net.smc.core.transport.sim.LinkProfile;
@@ -63,6 +64,8 @@ public final class RescueScenario implements AutoCloseable {
     static final Set<String> ROBOT_TASKS = Set.of("Navigator", "Assist", "HazardDetector", "Aggregator");
     /** The wearable's files, loaded when its cell boots. */
     static final List<String> WEARABLE_POLICIES = List.of("policy:/soldier/wearable");
+    /** The two robots, in the order the scenario looks at them. */
+    private static final List<String> ROBOTS = List.of("r1", "r2");
 
     /**
      * How to run it.
@@ -275,8 +278,9 @@ public final class RescueScenario implements AutoCloseable {
     }
 
     private Optional<String> assisted() {
-        for (String r : List.of("r1", "r2")) {
-            if (world.task(r, Assist.class).map(Assist::hasAssisted).orElse(false)) {
+        for (String r : ROBOTS) {
+            Optional<Assist> assist = world.task(r, Assist.class);
+            if (assist.isPresent() && assist.get().hasAssisted()) {
                 return Optional.of(r);
             }
         }
@@ -285,20 +289,25 @@ public final class RescueScenario implements AutoCloseable {
 
     /** Who holds the surveyor role now. */
     private Optional<String> surveyor() {
-        for (String r : List.of("r1", "r2")) {
+        for (String r : ROBOTS) {
             Cell c = team.cell(r);
-            if (c != null && c.seats().stream().anyMatch(s -> s.role().equals("surveyor"))) {
-                return Optional.of(r);
+            if (c != null) {
+                for (Seat s : c.seats()) {
+                    if (s.role().equals("surveyor")) {
+                        return Optional.of(r);
+                    }
+                }
             }
         }
         return Optional.empty();
     }
 
     private void watch() {
-        for (String r : List.of("r1", "r2")) {
+        for (String r : ROBOTS) {
             Cell c = team.cell(r);
             if (c != null) {
-                roles.put(r, c.seats().isEmpty() ? null : c.seats().get(0).role());
+                List<Seat> seats = c.seats();
+                roles.put(r, seats.isEmpty() ? null : seats.get(0).role());
             }
         }
         if (firstSurveyor != null && firstStop >= 0) {

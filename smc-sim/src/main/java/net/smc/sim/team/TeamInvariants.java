@@ -290,13 +290,17 @@ public final class TeamInvariants {
 
     private void checkCommanders() {
         List<Cell> commanders = sim.commanders();
+        if (commanders.size() < 2 && metSince.isEmpty()) {
+            return;   // no pair to check, none remembered
+        }
         Set<String> pairs = new HashSet<>();
         long now = sim.nowMillis();
+        List<Set<String>> parts = commanders.size() < 2 ? List.of() : sim.parts();
         for (int i = 0; i < commanders.size(); i++) {
             for (int j = i + 1; j < commanders.size(); j++) {
                 String a = commanders.get(i).vehicle();
                 String b = commanders.get(j).vehicle();
-                if (!sameParts(a, b)) {
+                if (!samePart(parts, a, b)) {
                     continue;
                 }
                 String key = a + "|" + b;
@@ -311,8 +315,13 @@ public final class TeamInvariants {
         metSince.keySet().retainAll(pairs);
     }
 
-    private boolean sameParts(String a, String b) {
-        return sim.parts().stream().anyMatch(p -> p.contains(a) && p.contains(b));
+    private static boolean samePart(List<Set<String>> parts, String a, String b) {
+        for (Set<String> p : parts) {
+            if (p.contains(a) && p.contains(b)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
