@@ -5,7 +5,6 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
-import java.util.PriorityQueue;
 
 /**
  * A* on an {@link OccupancyGrid}, 8-connected without cutting corners. A cell is closed to the
@@ -102,11 +101,11 @@ public final class PathPlanner {
         Arrays.fill(cost, Double.POSITIVE_INFINITY);
         Arrays.fill(from, -1);
         cost[s] = 0;
-        PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
-        open.add(new double[] {heuristic(startC, startR, goalC, goalR), s});
+        OpenCells open = new OpenCells();
+        open.add(heuristic(startC, startR, goalC, goalR), s);
         boolean[] done = new boolean[closed.length];
         while (!open.isEmpty()) {
-            int cell = (int) open.poll()[1];
+            int cell = open.poll();
             if (done[cell]) {
                 continue;
             }
@@ -133,12 +132,75 @@ public final class PathPlanner {
                     if (cost[cell] + step < cost[next]) {
                         cost[next] = cost[cell] + step;
                         from[next] = cell;
-                        open.add(new double[] {cost[next] + heuristic(c + dc, r + dr, goalC, goalR), next});
+                        open.add(cost[next] + heuristic(c + dc, r + dr, goalC, goalR), next);
                     }
                 }
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * The open cells of a search by estimated cost, cheapest first: a binary heap on two arrays
+     * (no object per entry). Equal estimates leave in the order {@link java.util.PriorityQueue}
+     * would give them (the same sifts, the same comparisons), so a search expands the cells it
+     * always did and finds the same path.
+     */
+    private static final class OpenCells {
+        private double[] keys = new double[64];
+        private int[] cells = new int[64];
+        private int size;
+
+        boolean isEmpty() {
+            return size == 0;
+        }
+
+        void add(double key, int cell) {
+            if (size == keys.length) {
+                keys = Arrays.copyOf(keys, size * 2);
+                cells = Arrays.copyOf(cells, size * 2);
+            }
+            int k = size++;
+            while (k > 0) {
+                int parent = (k - 1) >>> 1;
+                if (Double.compare(key, keys[parent]) >= 0) {
+                    break;
+                }
+                keys[k] = keys[parent];
+                cells[k] = cells[parent];
+                k = parent;
+            }
+            keys[k] = key;
+            cells[k] = cell;
+        }
+
+        /** Takes out the cheapest cell. */
+        int poll() {
+            int first = cells[0];
+            int n = --size;
+            if (n > 0) {
+                double key = keys[n];
+                int cell = cells[n];
+                int k = 0;
+                int half = n >>> 1;
+                while (k < half) {
+                    int child = 2 * k + 1;
+                    int right = child + 1;
+                    if (right < n && Double.compare(keys[child], keys[right]) > 0) {
+                        child = right;
+                    }
+                    if (Double.compare(key, keys[child]) <= 0) {
+                        break;
+                    }
+                    keys[k] = keys[child];
+                    cells[k] = cells[child];
+                    k = child;
+                }
+                keys[k] = key;
+                cells[k] = cell;
+            }
+            return first;
+        }
     }
 
     private static double heuristic(int c, int r, int goalC, int goalR) {

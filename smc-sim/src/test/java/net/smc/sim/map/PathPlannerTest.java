@@ -1,0 +1,152 @@
+package net.smc.sim.map;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import java.util.Optional;
+import java.util.PriorityQueue;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * The planner finds, on any grid, the very path of a plain A* (a {@link PriorityQueue} of
+ * {@code [estimate, cell]}, the clearance checked by distance around every occupied cell): its own
+ * open list and its clearance offsets worked out once must change how fast it plans, not which
+ * path it gives, since robots follow that path and a run's timeline depends on it.
+ */
+class PathPlannerTest {
+
+    @Test
+    void findsThePathOfAPlainAStarOnRandomGrids() {
+        Random random = new Random(12);
+        int paths = 0;
+        for (int trial = 0; trial < 300; trial++) {
+            double resolution = 0.1 + 0.1 * random.nextInt(3);
+            OccupancyGrid grid = new OccupancyGrid(0, 0, 2 + random.nextInt(5), 2 + random.nextInt(5), resolution);
+            int occupied = random.nextInt(40);
+            for (int i = 0; i < occupied; i++) {
+                grid.markOccupied(random.nextDouble() * grid.cols() * resolution, random.nextDouble() * grid.rows() * resolution);
+            }
+            for (int i = 0; i < 200; i++) {
+                double x = random.nextDouble() * grid.cols() * resolution;
+                double y = random.nextDouble() * grid.rows() * resolution;
+                if (!grid.isOccupied(grid.col(x), grid.row(y))) {
+                    grid.markFree(x, y);
+                }
+            }
+            List<Zone> zones = new ArrayList<>();
+            for (int i = random.nextInt(3); i > 0; i--) {
+                zones.add(new Zone(random.nextDouble() * grid.cols() * resolution, random.nextDouble() * grid.rows() * resolution,
+                        0.1 + random.nextDouble() * 0.5));
+            }
+            double clearance = random.nextDouble() * 0.4;
+            double margin = random.nextDouble() * 0.2;
+            Point start = new Point(random.nextDouble() * grid.cols() * resolution, random.nextDouble() * grid.rows() * resolution);
+            Point goal = new Point(random.nextDouble() * grid.cols() * resolution, random.nextDouble() * grid.rows() * resolution);
+            PathPlanner planner = new PathPlanner(clearance);
+            String what = "trial " + trial;
+            assertArrayEquals(plainClosed(grid, clearance, zones, margin), planner.closedCells(grid, zones, margin), what);
+            Optional<List<Point>> path = planner.plan(grid, start, goal, zones, margin);
+            assertEquals(plainPlan(grid, clearance, start, goal, zones, margin), path, what);
+            paths += path.isPresent() && path.get().size() > 2 ? 1 : 0;
+        }
+        assertTrue(paths > 50, "enough trials found a path with turns to compare: " + paths);
+    }
+
+    private static boolean[] plainClosed(OccupancyGrid grid, double clearance, List<Zone> avoid, double margin) {
+        int cols = grid.cols();
+        boolean[] closed = new boolean[cols * grid.rows()];
+        int reach = (int) Math.ceil(clearance / grid.resolution());
+        for (int r = 0; r < grid.rows(); r++) {
+            for (int c = 0; c < cols; c++) {
+                for (int dr = -reach; dr <= reach && grid.isOccupied(c, r); dr++) {
+                    for (int dc = -reach; dc <= reach; dc++) {
+                        if (grid.inside(c + dc, r + dr) && Math.hypot(dc, dr) * grid.resolution() <= clearance + 1e-9) {
+                            closed[(c + dc) + (r + dr) * cols] = true;
+                        }
+                    }
+                }
+                for (Zone zone : avoid) {
+                    Point p = grid.centre(c, r);
+                    closed[c + r * cols] |= zone.contains(p.x(), p.y(), margin + grid.resolution() * Math.sqrt(0.5));
+                }
+            }
+        }
+        return closed;
+    }
+
+    private static Optional<List<Point>> plainPlan(OccupancyGrid grid, double clearance, Point start, Point goal,
+                                                   List<Zone> avoid, double margin) {
+        if (!grid.covers(goal.x(), goal.y()) || avoid.stream().anyMatch(z -> z.contains(goal.x(), goal.y(), margin))) {
+            return Optional.empty();
+        }
+        boolean[] closed = plainClosed(grid, clearance, avoid, margin);
+        int cols = grid.cols();
+        int s = Math.max(0, Math.min(cols - 1, grid.col(start.x()))) + Math.max(0, Math.min(grid.rows() - 1, grid.row(start.y()))) * cols;
+        int gc = grid.col(goal.x());
+        int gr = grid.row(goal.y());
+        int g = gc + gr * cols;
+        if (closed[g] && g != s) {
+            return Optional.empty();
+        }
+        double[] cost = new double[closed.length];
+        int[] from = new int[closed.length];
+        Arrays.fill(cost, Double.POSITIVE_INFINITY);
+        cost[s] = 0;
+        PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
+        open.add(new double[] {Math.hypot(s % cols - gc, s / cols - gr), s});
+        boolean[] done = new boolean[closed.length];
+        while (!open.isEmpty()) {
+            int cell = (int) open.poll()[1];
+            if (done[cell]) {
+                continue;
+            }
+            done[cell] = true;
+            if (cell == g) {
+                return Optional.of(corners(grid, from, s, g, goal));
+            }
+            int c = cell % cols;
+            int r = cell / cols;
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    int next = (c + dc) + (r + dr) * cols;
+                    if ((dc == 0 && dr == 0) || !grid.inside(c + dc, r + dr) || closed[next] || done[next]
+                            || (dc != 0 && dr != 0 && (closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols]))) {
+                        continue;
+                    }
+                    double step = (dc != 0 && dr != 0 ? Math.sqrt(2) : 1) * (grid.isKnown(c + dc, r + dr) ? 1 : PathPlanner.UNKNOWN_COST);
+                    if (cost[cell] + step < cost[next]) {
+                        cost[next] = cost[cell] + step;
+                        from[next] = cell;
+                        open.add(new double[] {cost[next] + Math.hypot(c + dc - gc, r + dr - gr), next});
+                    }
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static List<Point> corners(OccupancyGrid grid, int[] from, int s, int g, Point goal) {
+        List<Integer> cells = new ArrayList<>();
+        for (int cell = g; cell != s; cell = from[cell]) {
+            cells.add(cell);
+        }
+        Collections.reverse(cells);
+        List<Point> points = new ArrayList<>();
+        int prev = s;
+        for (int i = 0; i < cells.size() - 1; i++) {
+            if (cells.get(i) - prev != cells.get(i + 1) - cells.get(i)) {
+                points.add(grid.centre(cells.get(i) % grid.cols(), cells.get(i) / grid.cols()));
+            }
+            prev = cells.get(i);
+        }
+        points.add(goal);
+        return points;
+    }
+}
