@@ -59,8 +59,16 @@ public final class PathPlanner {
         }
         double halfDiagonal = grid.resolution() * Math.sqrt(0.5);
         for (Zone zone : avoid) {
-            for (int r = 0; r < rows; r++) {
-                for (int c = 0; c < cols; c++) {
+            // only the cells round the zone can have their centre in it: a cell more beyond its
+            // reach, so that rounding cannot leave one out
+            double reachOfZone = zone.radius() + margin + halfDiagonal;
+            double res = grid.resolution();
+            int fromC = cellIndex(Math.floor((zone.x() - reachOfZone - grid.minX()) / res) - 1, cols);
+            int toC = cellIndex(Math.floor((zone.x() + reachOfZone - grid.minX()) / res) + 1, cols);
+            int fromR = cellIndex(Math.floor((zone.y() - reachOfZone - grid.minY()) / res) - 1, rows);
+            int toR = cellIndex(Math.floor((zone.y() + reachOfZone - grid.minY()) / res) + 1, rows);
+            for (int r = fromR; r <= toR; r++) {
+                for (int c = fromC; c <= toC; c++) {
                     Point p = grid.centre(c, r);
                     if (zone.contains(p.x(), p.y(), margin + halfDiagonal)) {
                         closed[c + r * cols] = true;
@@ -69,6 +77,11 @@ public final class PathPlanner {
             }
         }
         return closed;
+    }
+
+    /** A column or row index clamped to {@code [0, n)}; worked out in doubles, so an infinite reach cannot overflow. */
+    private static int cellIndex(double index, int n) {
+        return (int) Math.max(0, Math.min(n - 1, index));
     }
 
     /**

@@ -252,7 +252,8 @@ public final class SimWorld {
         for (int i = 0; i < out.length; i++) {
             Ray ray = new Ray(new Vector2(x[i], y[i]), angle[i]);
             double nearest = Double.POSITIVE_INFINITY;
-            for (Body body : near) {
+            for (int b = 0; b < near.size(); b++) {   // by index: no iterator per ray
+                Body body = near.get(b);
                 RaycastResult<Body, BodyFixture> hit = physics.raycastClosest(ray, maxLength, body, filter);
                 if (hit != null && hit.getRaycast().getDistance() < nearest) {
                     nearest = hit.getRaycast().getDistance();
