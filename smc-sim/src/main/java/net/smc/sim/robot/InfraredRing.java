@@ -6,7 +6,9 @@ import net.smc.sim.hardware.ProximitySensors;
 /**
  * Sixteen infrared proximity sensors on the body's edge, each a ray cast through the world: the
  * distance from the edge to the first body (wall, obstacle, robot, hazard, soldier) within range,
- * plus seeded Gaussian noise, clamped to [0, range].
+ * plus seeded Gaussian noise, clamped to [0, range]. Read again while nothing in the world moved and
+ * no new noise was drawn ({@link RobotGround#moment()} unchanged: a navigating robot maps and
+ * steers from the same step's readings), it gives the same readings without casting the rays again.
  */
 final class InfraredRing implements ProximitySensors {
     /** Rays start this far inside the body, so that a sensor pressed against a wall still sees it. */
@@ -17,6 +19,8 @@ final class InfraredRing implements ProximitySensors {
     private final double[] rayY;
     private final double[] rayAngle;
     private final double[] hits;
+    private final double[] last;   // the last readings, and the world's moment they were taken at
+    private long lastMoment = -1;
 
     InfraredRing(SimRobot robot) {
         this.robot = robot;
@@ -32,6 +36,7 @@ final class InfraredRing implements ProximitySensors {
         rayY = new double[edge.length];
         rayAngle = new double[edge.length];
         hits = new double[edge.length];
+        last = new double[edge.length];
     }
 
     @Override
@@ -51,6 +56,10 @@ final class InfraredRing implements ProximitySensors {
 
     @Override
     public double[] read() {
+        long moment = robot.ground().moment();
+        if (moment == lastMoment) {
+            return last.clone();
+        }
         KoalaSpec spec = robot.spec();
         Pose p = robot.pose();
         double range = spec.irRange();
@@ -73,6 +82,8 @@ final class InfraredRing implements ProximitySensors {
                 out[i] = Math.max(0, Math.min(range, noisy));
             }
         }
+        System.arraycopy(out, 0, last, 0, out.length);
+        lastMoment = moment;
         return out;
     }
 }

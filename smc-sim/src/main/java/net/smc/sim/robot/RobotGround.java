@@ -35,6 +35,13 @@ public interface RobotGround {
      */
     double gaussian(long stream, int channel);
 
+    /**
+     * A number that changes whenever what a sensor reads may have changed: a body moved (the
+     * physics stepped), a robot came into the world, or a new step's noise was drawn. While it
+     * stays the same a sensor may give its last reading again instead of casting its rays anew.
+     */
+    long moment();
+
     /** The radio of the robot called {@code id}, as its cell uses it. */
     Radio radio(String id);
 

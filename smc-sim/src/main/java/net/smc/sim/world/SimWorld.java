@@ -67,6 +67,8 @@ public final class SimWorld {
     private final RobotGround robotGround = new Surroundings();
     private final List<Body> nearBodies = new ArrayList<>();   // scratch of castRays
     private long steps;
+    /** Changes whenever a sensor's reading may change: see {@link RobotGround#moment()}. */
+    private long moment;
     private Cancellable ticking;
 
     private SimWorld(Builder b) {
@@ -108,6 +110,7 @@ public final class SimWorld {
         }
         SimRobot robot = new SimRobot(robotGround, id, order.size(), spec, start);
         physics.addBody(robot.body());
+        moment++;
         robots.put(id, robot);
         order.add(robot);
         return robot;
@@ -136,6 +139,7 @@ public final class SimWorld {
     /** Runs one step now (the scheduler calls this when started; tests may call it directly). */
     public void step() {
         steps++;
+        moment++;   // a new step's noise
         double time = time();
         for (SimRobot robot : order) {
             robot.runControl(time, dt);
@@ -144,6 +148,7 @@ public final class SimWorld {
             robot.applyDrive(dt);
         }
         physics.step(1);
+        moment++;   // the bodies moved
         for (SimRobot robot : order) {
             String cause = robot.afterStep(dt);
             if (cause != null) {
@@ -384,6 +389,11 @@ public final class SimWorld {
         @Override
         public double gaussian(long stream, int channel) {
             return noise.gaussian(stream, steps, channel);
+        }
+
+        @Override
+        public long moment() {
+            return moment;
         }
 
         @Override

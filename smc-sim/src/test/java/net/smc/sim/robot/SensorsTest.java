@@ -1,16 +1,20 @@
 package net.smc.sim.robot;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
 import net.smc.sim.hardware.ChemicalSensor;
+import net.smc.sim.hardware.Radio;
 import net.smc.sim.hardware.Sighting;
 import net.smc.sim.arena.Arena;
 import net.smc.sim.world.SimWorld;
 import net.smc.sim.world.Worlds;
+import org.dyn4j.dynamics.Body;
 import org.junit.jupiter.api.Test;
 
 class SensorsTest {
@@ -137,6 +141,85 @@ class SensorsTest {
         assertEquals(x, robot.pose().x(), 1e-3, "a disabled robot does not drive on");
         assertTrue(robot.radio().neighbours().isEmpty());
         assertEquals(0, peer.radio().linkQuality("r"));
+    }
+
+    @Test
+    void infrared_readAgainInTheSameMoment_givesTheSameReadingsWithoutCastingAgain() {
+        CountingGround ground = new CountingGround();
+        SimRobot robot = new SimRobot(ground, "r", 0, KoalaSpec.koala(), Worlds.start(1, 1, 0));
+        double[] first = robot.proximity().read();
+        double[] again = robot.proximity().read();
+        assertEquals(1, ground.casts, "one fan of rays for two reads in one moment");
+        assertArrayEquals(first, again);
+        assertNotSame(first, again, "each read gets its own array");
+        again[0] = -1;
+        assertEquals(first[0], robot.proximity().read()[0], "a caller's change does not reach the next read");
+        ground.moment++;
+        ground.distance = 0.05;
+        double[] moved = robot.proximity().read();
+        assertEquals(2, ground.casts, "a new moment casts anew");
+        assertTrue(moved[0] < first[0], moved[0] + " after the world changed, " + first[0] + " before");
+    }
+
+    @Test
+    void infrared_readBetweenSteps_seesWhereThePhysicsMovedTheRobot() {
+        // driving at a wall: read by its control loop before the physics moves it, and again after
+        SimWorld world = Worlds.world(Worlds.arena(4, 4, START), 3);
+        SimRobot robot = world.addRobot("r", Worlds.start(3.66, 2, 0), KoalaSpec.koala().withIrNoise(0));
+        double[][] inLoop = new double[1][];
+        robot.control(this, (time, dt) -> {
+            inLoop[0] = robot.proximity().read();
+            robot.drive().setWheelSpeeds(0.3, 0.3);
+        });
+        for (int i = 0; i < 15; i++) {
+            world.step();
+        }
+        assertTrue(inLoop[0][0] < robot.proximity().range(), "the wall is in range: " + inLoop[0][0]);
+        double[] after = robot.proximity().read();
+        assertTrue(after[0] < inLoop[0][0] - 1e-4, "after the step " + after[0] + ", in the step's loop " + inLoop[0][0]);
+    }
+
+    /** A ground whose every ray hits at {@code distance}, counting the fans cast. */
+    private static final class CountingGround implements RobotGround {
+        int casts;
+        long moment;
+        double distance = 0.1;
+
+        @Override
+        public Arena arena() {
+            return Worlds.arena(4, 4, START);
+        }
+
+        @Override
+        public Iterable<SimRobot> robots() {
+            return List.of();
+        }
+
+        @Override
+        public void castRays(double[] x, double[] y, double[] angle, double maxLength, Body self, double[] out) {
+            casts++;
+            java.util.Arrays.fill(out, distance);
+        }
+
+        @Override
+        public boolean clearLine(double ax, double ay, double bx, double by) {
+            return true;
+        }
+
+        @Override
+        public double gaussian(long stream, int channel) {
+            return 0.5;
+        }
+
+        @Override
+        public long moment() {
+            return moment;
+        }
+
+        @Override
+        public Radio radio(String id) {
+            throw new UnsupportedOperationException("no radio here");
+        }
     }
 
     private static Sighting find(List<Sighting> seen, String tag) {
