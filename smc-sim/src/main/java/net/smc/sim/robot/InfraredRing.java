@@ -20,7 +20,7 @@ final class InfraredRing implements ProximitySensors {
     private final double[] rayAngle;
     private final double[] hits;
     private final double[] last;   // the last readings, and the world's moment they were taken at
-    private long lastMoment = -1;
+    private long lastMoment = RobotGround.NO_MOMENT;
 
     InfraredRing(SimRobot robot) {
         this.robot = robot;
@@ -57,7 +57,7 @@ final class InfraredRing implements ProximitySensors {
     @Override
     public double[] read() {
         long moment = robot.ground().moment();
-        if (moment == lastMoment) {
+        if (moment == lastMoment && moment != RobotGround.NO_MOMENT) {
             return last.clone();
         }
         KoalaSpec spec = robot.spec();

@@ -35,12 +35,18 @@ public interface RobotGround {
      */
     double gaussian(long stream, int channel);
 
+    /** What {@link #moment()} answers for a ground that does not keep one: sensors then always read anew. */
+    long NO_MOMENT = Long.MIN_VALUE;
+
     /**
      * A number that changes whenever what a sensor reads may have changed: a body moved (the
      * physics stepped), a robot came into the world, or a new step's noise was drawn. While it
      * stays the same a sensor may give its last reading again instead of casting its rays anew.
+     * {@link #NO_MOMENT} (the default) promises nothing.
      */
-    long moment();
+    default long moment() {
+        return NO_MOMENT;
+    }
 
     /** The radio of the robot called {@code id}, as its cell uses it. */
     Radio radio(String id);

@@ -162,6 +162,16 @@ class SensorsTest {
     }
 
     @Test
+    void infrared_onAGroundThatKeepsNoMoment_readsAnewEachTime() {
+        CountingGround ground = new CountingGround();
+        ground.moment = RobotGround.NO_MOMENT;
+        SimRobot robot = new SimRobot(ground, "r", 0, KoalaSpec.koala(), Worlds.start(1, 1, 0));
+        robot.proximity().read();
+        robot.proximity().read();
+        assertEquals(2, ground.casts);
+    }
+
+    @Test
     void infrared_readBetweenSteps_seesWhereThePhysicsMovedTheRobot() {
         // driving at a wall: read by its control loop before the physics moves it, and again after
         SimWorld world = Worlds.world(Worlds.arena(4, 4, START), 3);
