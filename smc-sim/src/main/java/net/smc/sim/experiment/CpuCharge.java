@@ -11,6 +11,7 @@ import net.smc.core.message.MessageType;
 import net.smc.core.message.WireFormat;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.CpuModel;
+import net.smc.sim.experiment.CpuLedger.Category;
 
 /**
  * The CPU a cell spends per datagram, from measured per-operation {@link CpuCosts}, for the
@@ -34,17 +35,28 @@ public final class CpuCharge implements CpuModel {
     private static final int TYPE_OFFSET = 3;
     private static final int SENDER_LENGTH_OFFSET = 4;
 
+    /** Where the encoded message starts in a datagram on the network (after the transport's seal, if any). */
+    private final int payloadOffset;
+
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
     /** What is known of each address that sent or received: its number, vehicle and contacts. */
     private final Map<Address, Node> nodes = new HashMap<>();
+    private final CpuLedger ledger = new CpuLedger();
     private long datagrams;
     private long bytes;
 
     /**
      * @param newUavPolicies how many {@code newUAV} policies the vehicle with this id runs
+     * @param payloadOffset  where the encoded message starts in a datagram as the network carries it:
+     *                       {@code IdealAuthentication.PAYLOAD_OFFSET} on a team simulation's network
+     *                       (its seal comes first), 0 for bare messages
      */
-    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies) {
+    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, int payloadOffset) {
+        if (payloadOffset < 0) {
+            throw new IllegalArgumentException("payload offset " + payloadOffset + " must be 0 or more");
+        }
+        this.payloadOffset = payloadOffset;
         this.costs = Objects.requireNonNull(costs, "costs");
         this.newUavPolicies = Objects.requireNonNull(newUavPolicies, "newUavPolicies");
     }
@@ -56,14 +68,16 @@ public final class CpuCharge implements CpuModel {
         Node node = node(at);
         if (node.vehicle == null) {
             node.vehicle = sender(data);
+            ledger.name(node.number, node.vehicle);
         }
-        double ns = codec(data.length);
+        ledger.sent(type(data), data.length);
+        double ns = charge(node, Category.CODEC, codec(data.length));
         if (to == null) {
-            ns += costs.signNanos();
+            ns += charge(node, Category.SIGN, costs.signNanos());
         } else {
-            ns += mac(data.length);
+            ns += charge(node, Category.MAC, mac(data.length));
             if (node.firstContact(node(to))) {
-                ns += costs.signNanos() + costs.agreeNanos();
+                ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
             }
         }
         return micros(ns);
@@ -71,19 +85,32 @@ public final class CpuCharge implements CpuModel {
 
     @Override
     public long receiveMicros(Address at, Address from, byte[] data, boolean broadcast) {
-        double ns = codec(data.length) + (broadcast ? costs.verifyNanos() : mac(data.length));
         Node node = node(at);
+        double ns = charge(node, Category.CODEC, codec(data.length))
+                + (broadcast ? charge(node, Category.VERIFY, costs.verifyNanos()) : charge(node, Category.MAC, mac(data.length)));
         if (node.firstContact(node(from))) {
-            ns += costs.verifyNanos() + costs.agreeNanos();
+            ns += charge(node, Category.HANDSHAKE, costs.verifyNanos() + costs.agreeNanos());
         }
         int type = type(data);
+        ledger.received(node.number, type);
         if (type == MessageType.POLICY_REPLY.code()) {
-            ns += costs.loadNanosPerByte() * data.length;
+            ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * data.length);
         } else if (type == MessageType.DISCOVERY_REPLY.code()) {
             String vehicle = node.vehicle;
-            ns += costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle));
+            ns += charge(node, Category.CONDITION,
+                    costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle)));
         }
         return micros(ns);
+    }
+
+    private double charge(Node node, Category category, double ns) {
+        ledger.charge(node.number, category, ns);
+        return ns;
+    }
+
+    /** Where the charged CPU went, per cell and category, and the datagrams by kind. */
+    public CpuLedger ledger() {
+        return ledger;
     }
 
     /** Datagrams sent so far (a broadcast counts once). */
@@ -104,26 +131,29 @@ public final class CpuCharge implements CpuModel {
         return costs.macNanos() + costs.macNanosPerByte() * length;
     }
 
-    /** The message type of a datagram; for a fragment, the type of the message it is a piece of. */
-    static int type(byte[] data) {
-        if (data.length <= SENDER_LENGTH_OFFSET) {
+    /** The message type of a datagram; for a fragment, the type of the message it is a piece of; -1 if unreadable. */
+    int type(byte[] data) {
+        int at = payloadOffset;
+        if (data.length <= at + SENDER_LENGTH_OFFSET) {
             return -1;
         }
-        int type = data[TYPE_OFFSET] & 0xFF;
+        int type = data[at + TYPE_OFFSET] & 0xFF;
         if (type != WireFormat.FRAGMENT_CODE) {
             return type;
         }
-        int payload = SENDER_LENGTH_OFFSET + 1 + (data[SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
+        int payload = at + SENDER_LENGTH_OFFSET + 1 + (data[at + SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
         return payload < data.length ? data[payload] & 0xFF : -1;
     }
 
-    private static String sender(byte[] data) {
-        if (data.length <= SENDER_LENGTH_OFFSET) {
+    /** The vehicle named as a datagram's sender, or "" if unreadable. */
+    String sender(byte[] data) {
+        int at = payloadOffset;
+        if (data.length <= at + SENDER_LENGTH_OFFSET) {
             return "";
         }
-        int n = data[SENDER_LENGTH_OFFSET] & 0xFF;
-        return n <= data.length - SENDER_LENGTH_OFFSET - 1
-                ? new String(data, SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
+        int n = data[at + SENDER_LENGTH_OFFSET] & 0xFF;
+        return n <= data.length - at - SENDER_LENGTH_OFFSET - 1
+                ? new String(data, at + SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
     }
 
     private Node node(Address address) {

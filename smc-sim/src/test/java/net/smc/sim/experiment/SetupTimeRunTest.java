@@ -33,4 +33,20 @@ class SetupTimeRunTest {
             assertTrue(r.setupMillis() > 0 && r.messages() > 0 && r.bytes() > 0 && r.busiestCpuMillis() > 0, r::toString);
         }
     }
+
+    /** The report names the busiest vehicle and charges the policies' loading: the CPU model reads the sealed datagrams. */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({"DISTRIBUTED", "CENTRALISED"})
+    void theReportShowsWhereTheCpuWent(Scheme scheme) throws Exception {
+        GeneratedMission g = MissionGenerator.write(TreeShape.of(10, 4), dir, Project.bootEvents());
+        Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(scheme));
+        StringBuilder report = new StringBuilder();
+        SetupResult r = SetupTimeRun.run(g, mission, scheme, 1, 41, RadioNetwork.ADHOC_80211, COSTS, 60_000, report::append);
+        assertTrue(r.complete(), r::toString);
+        String text = report.toString();
+        assertTrue(text.contains("policy_load") && text.contains("handshake"), text);
+        assertTrue(text.matches("(?s).*busiest cell (cdr|b\\d+l\\d+n\\d+): .*"), text);
+        assertTrue(text.contains("POLICY_REPLY") && text.contains("DISCOVERY_REPLY") && text.contains("ROLE_ASSIGNMENT"), text);
+        assertTrue(text.matches("(?s).*by level: L1 \\d+-\\d+ L2 \\d+-\\d+ L3 \\d+-\\d+.*"), text);
+    }
 }
