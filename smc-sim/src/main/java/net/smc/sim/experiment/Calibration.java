@@ -17,9 +17,6 @@ import net.smc.core.message.MessageEncoder;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.security.SigningKey;
 import net.smc.core.security.VerificationKey;
-import net.smc.core.role.PolicySource;
-import net.smc.core.role.Role;
-import net.smc.core.role.RoleManager;
 import net.smc.policy.PolicyEngine;
 import net.smc.policy.RunResult;
 
@@ -96,22 +93,9 @@ public final class Calibration {
         double codecFixed = Math.max(0, codecSmall - codecPerByte * hbBytes);
 
         String boot = Files.readString(bootEvents);
-        RoleType manager = mission.roles().get(0);
-        Path roleDir = mission.repository().resolve("roles/" + manager.name());
-        String text = Files.readString(roleDir.resolve("mission.p2"));
-        String auth = Files.readString(roleDir.resolve("auth.p2"));
-        Role role = Role.builder(manager.name()).mission(PolicySource.text("mission.p2", text))
-                .authorisation(PolicySource.text("auth.p2", auth)).build();
-        // What a vehicle does when it takes a role: its engine was booted when the vehicle started;
-        // the role manager creates the role's domains and runs its role-mission and authorisations.
-        // Loaded and withdrawn again in one booted engine, per byte of the two files' text.
-        PolicyEngine engine = PolicyEngine.builder().build();
-        check(engine.run("boot", boot));
-        RoleManager roles = RoleManager.builder(engine).build();
-        double loadPerByte = time(20, () -> {
-            roles.load(role);
-            roles.withdraw(role.name());
-        }) / (text.length() + auth.length());
+        // What a vehicle does when it takes a role, per byte of the role's policy text.
+        RoleLoadWork load = new RoleLoadWork(bootEvents, mission);
+        double loadPerByte = time(20, load::loadAndWithdraw) / load.bytes();
 
         int policies = 20;
         PolicyEngine cell = PolicyEngine.builder().build();

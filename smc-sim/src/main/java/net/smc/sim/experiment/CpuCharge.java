@@ -5,6 +5,7 @@ import java.util.BitSet;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
+import java.util.function.BiPredicate;
 import java.util.function.ToIntFunction;
 
 import net.smc.core.message.MessageType;
@@ -23,8 +24,10 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *       MAC'd (HMAC-SHA256) by both ends;</li>
  *   <li>the first datagram between two cells costs a key agreement (X25519) at each end, a signature
  *       at the sender and the credential's verification at the receiver;</li>
- *   <li>a {@code PolicyReply} costs its receiver the parsing and loading of the policy text it
- *       carries (per byte of payload);</li>
+ *   <li>a {@code PolicyReply} of a policy its receiver loads (given by {@code loads}: the files of
+ *       the role it takes, not the copies a manager keeps to serve the roles below it or a backup
+ *       commander keeps of the mission) costs the parsing and loading of the text it carries, per
+ *       byte of the datagram (of the whole message when fragmented, charged with its first fragment);</li>
  *   <li>a {@code DiscoveryReply} costs its receiver one condition per {@code newUAV} policy it runs
  *       (given by {@code newUavPolicies} from the receiving vehicle's id).</li>
  * </ul>
@@ -40,6 +43,7 @@ public final class CpuCharge implements CpuModel {
 
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
+    private final BiPredicate<String, String> loads;
     /** What is known of each address that sent or received: its number, vehicle and contacts. */
     private final Map<Address, Node> nodes = new HashMap<>();
     private final CpuLedger ledger = new CpuLedger();
@@ -48,17 +52,20 @@ public final class CpuCharge implements CpuModel {
 
     /**
      * @param newUavPolicies how many {@code newUAV} policies the vehicle with this id runs
+     * @param loads          whether the vehicle with this id (first) loads the policy of this URI (second)
      * @param payloadOffset  where the encoded message starts in a datagram as the network carries it:
      *                       {@code IdealAuthentication.PAYLOAD_OFFSET} on a team simulation's network
      *                       (its seal comes first), 0 for bare messages
      */
-    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, int payloadOffset) {
+    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+                     int payloadOffset) {
         if (payloadOffset < 0) {
             throw new IllegalArgumentException("payload offset " + payloadOffset + " must be 0 or more");
         }
         this.payloadOffset = payloadOffset;
         this.costs = Objects.requireNonNull(costs, "costs");
         this.newUavPolicies = Objects.requireNonNull(newUavPolicies, "newUavPolicies");
+        this.loads = Objects.requireNonNull(loads, "loads");
     }
 
     @Override
@@ -94,7 +101,7 @@ public final class CpuCharge implements CpuModel {
         int type = type(data);
         ledger.received(node.number, type);
         if (type == MessageType.POLICY_REPLY.code()) {
-            ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * data.length);
+            ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * loadedBytes(node, data));
         } else if (type == MessageType.DISCOVERY_REPLY.code()) {
             String vehicle = node.vehicle;
             ns += charge(node, Category.CONDITION,
@@ -143,6 +150,41 @@ public final class CpuCharge implements CpuModel {
         }
         int payload = at + SENDER_LENGTH_OFFSET + 1 + (data[at + SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
         return payload < data.length ? data[payload] & 0xFF : -1;
+    }
+
+    /**
+     * The bytes of policy text a {@code PolicyReply} datagram gives {@code node} to load: the datagram's
+     * length (a fragment's first: the whole message's) when the receiver loads the policy it names, else 0.
+     */
+    private int loadedBytes(Node node, byte[] data) {
+        int at = payloadOffset;
+        int payload = at + WireFormat.FIXED_HEADER + (data[at + SENDER_LENGTH_OFFSET] & 0xFF);
+        int length = data.length;
+        if ((data[at + TYPE_OFFSET] & 0xFF) == WireFormat.FRAGMENT_CODE) {
+            if (payload + WireFormat.FRAGMENT_HEADER > data.length || u16(data, payload + 1) != 0) {
+                return 0; // not the first fragment: the message was charged with that one
+            }
+            length = (int) Math.min(Integer.MAX_VALUE, u32(data, payload + 5));
+            payload += WireFormat.FRAGMENT_HEADER;
+        }
+        int uriAt = payload + 8; // after the request id it answers
+        if (uriAt >= data.length || node.vehicle == null) {
+            return 0;
+        }
+        int n = data[uriAt] & 0xFF;
+        if (uriAt + 1 + n > data.length) {
+            return 0;
+        }
+        String uri = new String(data, uriAt + 1, n, StandardCharsets.UTF_8);
+        return loads.test(node.vehicle, uri) ? length : 0;
+    }
+
+    private static int u16(byte[] b, int at) {
+        return (b[at] & 0xFF) << 8 | (b[at + 1] & 0xFF);
+    }
+
+    private static long u32(byte[] b, int at) {
+        return (long) u16(b, at) << 16 | u16(b, at + 2);
     }
 
     /** The vehicle named as a datagram's sender, or "" if unreadable. */

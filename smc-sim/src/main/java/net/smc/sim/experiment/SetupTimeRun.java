@@ -59,7 +59,8 @@ public final class SetupTimeRun {
         TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(generated.repository()), seed)
                 .vehicles(generated.vehicles()).scheme(scheme).link(radio.link()).listener(progress).build();
         // The team simulation seals every datagram (IdealAuthentication): the message follows the seal's counter.
-        CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme), IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
+                IdealAuthentication.PAYLOAD_OFFSET);
         InMemoryNetwork network = sim.network();
         network.setCpuModel(charge);
         network.setBandwidth(radio.bytesPerSecond());
