@@ -70,6 +70,10 @@ final class Assignee {
     void onCapabilityRequest(Envelope env, CapabilityRequest r) {
         boolean fromParent = st.parent != null && st.parent.vehicle().equals(env.sender());
         if (!fromParent && (!st.free() || st.left) && !promotion(r.role(), st.epoch)) {
+            // Declines, so that the manager asks another vehicle now instead of waiting for an answer
+            // that will not come (a request out holds its rediscovery back until it expires).
+            ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new AssignmentResponse(env.id(), r.role(), false,
+                    st.left ? "this vehicle has left the team" : "this vehicle is no longer free")));
             return;
         }
         ctx.address(env.sender()).ifPresent(a -> ctx.comm().send(a, new CapabilityReply(env.id(), ctx.description())));

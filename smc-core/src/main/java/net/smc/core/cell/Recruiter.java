@@ -130,10 +130,14 @@ final class Recruiter {
         if (to.isEmpty()) {
             return;
         }
-        pending = new PendingCapability(ctx.clock().nowMillis());
-        pending.roles.add(role);
-        st.capabilityRequests.put(uav, pending);
-        ctx.comm().send(to.get(), new CapabilityRequest(role), TeamContext.failureOnly(() -> st.capabilityRequests.remove(uav)));
+        PendingCapability asked = new PendingCapability(ctx.clock().nowMillis());
+        asked.roles.add(role);
+        st.capabilityRequests.put(uav, asked);
+        ctx.comm().send(to.get(), new CapabilityRequest(role), TeamContext.failureOnly(() -> {
+            if (st.capabilityRequests.remove(uav, asked)) {
+                rediscover.run();
+            }
+        }));
     }
 
     void onCapabilityReply(Envelope env, CapabilityReply r) {
@@ -267,6 +271,12 @@ final class Recruiter {
         Optional<Seat> seat = st.owned.entrySet().stream()
                 .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
                 .map(Map.Entry::getKey).findFirst();
+        if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
+            // The vehicle declined a capability request: it took a seat from another manager since it
+            // answered discovery. The request no longer holds rediscovery back; look again now.
+            rediscover.run();
+            return;
+        }
         if (seat.isEmpty()) {
             Child child = st.children.get(vehicle);
             boolean known = child != null && child.seats.stream().anyMatch(s -> s.role().equals(r.role()));

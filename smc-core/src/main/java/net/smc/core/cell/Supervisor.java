@@ -37,6 +37,8 @@ final class Supervisor {
     private static final int STATUS_GAP_HALF_PERIODS = 3;
     /** When {@link #rediscover} last discovered (far in the past: never). */
     private long rediscoveredMillis = Long.MIN_VALUE / 2;
+    /** Whether a rediscovery held back by the rate limit is scheduled for when the limit allows it. */
+    private boolean rediscoveryDue;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -165,14 +167,26 @@ final class Supervisor {
      * broadcast: in a large team many managers compete for the same free vehicles, and each
      * rediscovery would bring every one of them to answer again), and not within a quarter
      * heartbeat period of the last such discovery, so that vehicles refusing every offer cost at
-     * most four extra discoveries a period.
+     * most four extra discoveries a period: one asked for sooner runs when that quarter period has
+     * passed.
      */
     void rediscover() {
+        if (!st.capabilityRequests.isEmpty() || rediscoveryDue) {
+            return; // the decline or failure of the last request out asks again; a due one will run
+        }
         long now = ctx.clock().nowMillis();
-        if (st.capabilityRequests.isEmpty() && now - rediscoveredMillis >= ctx.timing().comTimeoutMillis() / 4) {
+        long allowedAt = rediscoveredMillis + ctx.timing().comTimeoutMillis() / 4;
+        if (now >= allowedAt) {
             rediscoveredMillis = now;
             discoverNow();
+            return;
         }
+        // Held back by the rate limit: discovers when the limit allows, not a period later at the tick.
+        rediscoveryDue = true;
+        ctx.scheduler().schedule(allowedAt - now, () -> {
+            rediscoveryDue = false;
+            rediscover();
+        });
     }
 
     /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */
