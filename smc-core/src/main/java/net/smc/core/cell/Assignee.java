@@ -106,20 +106,49 @@ final class Assignee {
         st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
         st.lastAssignmentFrom = from;
         st.lastAssignmentId = env.id();
-        Set<String> listed = new LinkedHashSet<>();
+        // The role's own files first: the role starts when they are in. The files of the roles below
+        // it (this cell serves them to its children) are fetched once it has taken the role.
+        Set<String> own = ownPolicyUris(a.role());
         for (PolicyRef ref : a.policies()) {
-            listed.add(ref.uri());
-            if (!ctx.store().has(ref)) {
+            if (own.contains(ref.uri()) && !ctx.store().has(ref)) {
                 ctx.comm().send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
             }
         }
-        // Whatever the role and the roles below it need that the assignment did not name.
-        for (String uri : ctx.subtreePolicyUris(a.role())) {
+        Set<String> listed = new LinkedHashSet<>();
+        a.policies().forEach(ref -> listed.add(ref.uri()));
+        for (String uri : own) {
             if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
                 ctx.comm().send(back.get(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
             }
         }
         completeIfReady();
+    }
+
+    /** The policy files of {@code role} itself: its role-missions and authorisations. */
+    private Set<String> ownPolicyUris(String role) {
+        Set<String> own = new LinkedHashSet<>(ctx.slots().role(role).policies());
+        own.addAll(ctx.slots().role(role).authorisations());
+        return own;
+    }
+
+    /**
+     * Fetches, from the manager that gave {@code a}, whatever the roles below the role taken need and
+     * this cell does not hold: the versions the assignment names, and any other file of the subtree.
+     */
+    private void fetchSubtreePolicies(Address from, RoleAssignment a) {
+        Set<String> own = ownPolicyUris(a.role());
+        Set<String> listed = new LinkedHashSet<>();
+        for (PolicyRef ref : a.policies()) {
+            listed.add(ref.uri());
+            if (!own.contains(ref.uri()) && !ctx.store().has(ref)) {
+                ctx.comm().send(from, new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        for (String uri : ctx.subtreePolicyUris(a.role())) {
+            if (!listed.contains(uri) && !own.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                ctx.comm().send(from, new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
     }
 
     /** Why this cell will not take a role from {@code from}, or null when it will. */
@@ -160,7 +189,11 @@ final class Assignee {
 
     private void completeIfReady() {
         Incoming in = st.incoming;
-        if (in == null || !in.assignment().policies().stream().allMatch(ctx.store()::has)
+        if (in == null) {
+            return;
+        }
+        Set<String> own = ownPolicyUris(in.assignment().role());
+        if (!in.assignment().policies().stream().filter(ref -> own.contains(ref.uri())).allMatch(ctx.store()::has)
                 || !ctx.policiesHeld(in.assignment().role())) {
             return;
         }
@@ -230,6 +263,7 @@ final class Assignee {
         seating.recomputeOwnership();
         ctx.emit(CellEvent.Kind.ACCEPTED, seat + " " + a.identity() + " from " + in.from() + ", holds " + st.seats);
         ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), true, ""));
+        fetchSubtreePolicies(in.address(), a);
         if (!a.handover().isEmpty()) {
             st.handedOver = a.handover();
             ctx.host().importTaskStates(a.role(), a.handover());
