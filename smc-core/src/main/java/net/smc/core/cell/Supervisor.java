@@ -19,6 +19,7 @@ import net.smc.core.message.Status;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.role.RoleLoadException;
 import net.smc.core.transport.Address;
+import net.smc.core.transport.Cancellable;
 
 /**
  * The manager's tick and its children's heartbeats: answers each heartbeat with a status (which
@@ -37,8 +38,10 @@ final class Supervisor {
     private static final int STATUS_GAP_HALF_PERIODS = 3;
     /** When {@link #rediscover} last discovered (far in the past: never). */
     private long rediscoveredMillis = Long.MIN_VALUE / 2;
-    /** Whether a rediscovery held back by the rate limit is scheduled for when the limit allows it. */
-    private boolean rediscoveryDue;
+    /** A rediscovery held back by the rate limit, scheduled for when the limit allows it, or null. */
+    private Cancellable rediscoveryDue;
+    /** Whether the cell stopped: what fails as its communication stops asks for no rediscovery. */
+    private boolean stopped;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -171,7 +174,7 @@ final class Supervisor {
      * passed.
      */
     void rediscover() {
-        if (!st.capabilityRequests.isEmpty() || rediscoveryDue) {
+        if (stopped || !st.capabilityRequests.isEmpty() || rediscoveryDue != null) {
             return; // the decline or failure of the last request out asks again; a due one will run
         }
         long now = ctx.clock().nowMillis();
@@ -182,11 +185,19 @@ final class Supervisor {
             return;
         }
         // Held back by the rate limit: discovers when the limit allows, not a period later at the tick.
-        rediscoveryDue = true;
-        ctx.scheduler().schedule(allowedAt - now, () -> {
-            rediscoveryDue = false;
+        rediscoveryDue = ctx.scheduler().schedule(allowedAt - now, () -> {
+            rediscoveryDue = null;
             rediscover();
         });
+    }
+
+    /** The cell stops (crashes, or is shut down): a rediscovery scheduled is called off. */
+    void stop() {
+        stopped = true;
+        if (rediscoveryDue != null) {
+            rediscoveryDue.cancel();
+            rediscoveryDue = null;
+        }
     }
 
     /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */

@@ -250,6 +250,7 @@ final class TeamProtocol implements DiscoveryActions {
         if (tickTimer != null) {
             tickTimer.cancel();
         }
+        supervisor.stop();
     }
 
     /** Leaves the team gracefully: tells parent and children, gives up every role, answers no discovery. */
