@@ -1,8 +1,10 @@
 package net.smc.core.cell;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
@@ -37,6 +39,8 @@ final class Assignee {
     private final TeamState st;
     private final Seating seating;
     private final Merge merge;
+    /** Whether this vehicle could hold a role managed by a manager of the role (the key): see couldHoldAny. */
+    private final Map<String, Boolean> couldHold = new HashMap<>();
     /** Run when this cell has taken a role: a manager starts discovering its children at once. */
     private final Runnable roleTaken;
 
@@ -281,11 +285,14 @@ final class Assignee {
      * decide. Every cell knows the mission, so this needs nothing on the wire.
      */
     private boolean couldHoldAny(String managerRole) {
-        if (ctx.slots().mission().role(managerRole).isEmpty() && !managerRole.equals(Mission.COMMANDER)) {
-            return false;
-        }
-        return ctx.slots().managedRoles(managerRole).stream()
-                .anyMatch(r -> ctx.slots().role(r).requirement().isMetBy(ctx.description()));
+        // The mission and this vehicle's description are fixed for the cell's life: asked once per role.
+        return couldHold.computeIfAbsent(managerRole, m -> {
+            if (ctx.slots().mission().role(m).isEmpty() && !m.equals(Mission.COMMANDER)) {
+                return false;
+            }
+            return ctx.slots().managedRoles(m).stream()
+                    .anyMatch(r -> ctx.slots().role(r).requirement().isMetBy(ctx.description()));
+        });
     }
 
     /**
