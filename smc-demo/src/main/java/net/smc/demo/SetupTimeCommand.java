@@ -98,6 +98,11 @@ final class SetupTimeCommand implements Callable<Integer> {
             description = "The project's policy repository, for boot/events.p2 (default: ${DEFAULT-VALUE}).")
     Path policies;
 
+    @Option(names = "--verbose", description = {"After each simulated run, a report on standard output: when the roles "
+            + "of each level of the tree started, the busiest cell's charged CPU by category and the datagrams it "
+            + "received by kind, and the team's datagrams and bytes by kind."})
+    boolean verbose;
+
     SetupTimeCommand(Io io) {
         this.io = io;
     }
@@ -160,9 +165,11 @@ final class SetupTimeCommand implements Callable<Integer> {
                         long pointStart = System.nanoTime();
                         for (int run = 1; run <= runs; run++) {
                             progress(results.size(), total, shape.roles(), scheme, t0);
+                            int r0 = run;
                             SetupResult r = transport.equals("udp")
                                     ? UdpSetupTimeRun.run(g, mission, scheme, run, seed + run, limitMillis)
-                                    : SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis);
+                                    : SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis,
+                                            report -> verbose(shape.roles(), scheme, r0, report));
                             results.add(r);
                             SetupTimeCsv.writeRow(csv, r);
                             csv.flush();
@@ -179,6 +186,15 @@ final class SetupTimeCommand implements Callable<Integer> {
         io.stdout().println("wrote " + dir.resolve("setup-time.csv") + " and " + dir.resolve("setup-time.png"));
         io.stdout().flush();
         return 0;
+    }
+
+    private void verbose(int roles, Scheme scheme, int run, String report) {
+        if (verbose) {
+            io.stderr().print("\r");
+            io.stdout().printf(Locale.ROOT, "%d roles %s run %d:%n%s", roles, scheme.name().toLowerCase(Locale.ROOT), run,
+                    report.indent(2));
+            io.stdout().flush();
+        }
     }
 
     private List<Scheme> schemes() {

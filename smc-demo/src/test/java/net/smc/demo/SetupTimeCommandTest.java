@@ -49,6 +49,28 @@ class SetupTimeCommandTest {
     }
 
     @Test
+    void verbose_reportsEachRunsLevelsBusiestCellAndTrafficByKind() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "distributed", "--out", "out", "--costs", costs().toString(), "--policies",
+                policies().toString(), "--verbose");
+        assertEquals(0, r.status(), r.err());
+        String out = r.out();
+        assertTrue(out.contains("5 roles distributed run 1:"), out);
+        assertTrue(out.contains("by level: L1 ") && out.contains(" L3 "), out);
+        assertTrue(out.matches("(?s).*busiest cell (cdr|b\\d+l\\d+n\\d+): [0-9.]+ ms charged CPU:.*policy_load.*"), out);
+        assertTrue(out.contains("team sent (datagrams/bytes):") && out.contains("ROLE_ASSIGNMENT"), out);
+    }
+
+    @Test
+    void withoutVerbose_noRunReport() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "distributed", "--out", "out", "--costs", costs().toString(), "--policies",
+                policies().toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(!r.out().contains("busiest cell"), r.out());
+    }
+
+    @Test
     void unknownScheme_isAUsageError() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--schemes", "anarchic", "--out", "o");
         assertEquals(2, r.status());

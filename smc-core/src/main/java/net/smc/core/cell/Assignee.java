@@ -1,8 +1,10 @@
 package net.smc.core.cell;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
@@ -37,6 +39,8 @@ final class Assignee {
     private final TeamState st;
     private final Seating seating;
     private final Merge merge;
+    /** Whether this vehicle could hold a role managed by a manager of the role (the key): see couldHoldAny. */
+    private final Map<String, Boolean> couldHold = new HashMap<>();
     /** Run when this cell has taken a role: a manager starts discovering its children at once. */
     private final Runnable roleTaken;
 
@@ -70,6 +74,10 @@ final class Assignee {
     void onCapabilityRequest(Envelope env, CapabilityRequest r) {
         boolean fromParent = st.parent != null && st.parent.vehicle().equals(env.sender());
         if (!fromParent && (!st.free() || st.left) && !promotion(r.role(), st.epoch)) {
+            // Declines, so that the manager asks another vehicle now instead of waiting for an answer
+            // that will not come (a request out holds its rediscovery back until it expires).
+            ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new AssignmentResponse(env.id(), r.role(), false,
+                    st.left ? "this vehicle has left the team" : "this vehicle is no longer free")));
             return;
         }
         ctx.address(env.sender()).ifPresent(a -> ctx.comm().send(a, new CapabilityReply(env.id(), ctx.description())));
@@ -102,20 +110,49 @@ final class Assignee {
         st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
         st.lastAssignmentFrom = from;
         st.lastAssignmentId = env.id();
-        Set<String> listed = new LinkedHashSet<>();
+        // The role's own files first: the role starts when they are in. The files of the roles below
+        // it (this cell serves them to its children) are fetched once it has taken the role.
+        Set<String> own = ownPolicyUris(a.role());
         for (PolicyRef ref : a.policies()) {
-            listed.add(ref.uri());
-            if (!ctx.store().has(ref)) {
+            if (own.contains(ref.uri()) && !ctx.store().has(ref)) {
                 ctx.comm().send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
             }
         }
-        // Whatever the role and the roles below it need that the assignment did not name.
-        for (String uri : ctx.subtreePolicyUris(a.role())) {
+        Set<String> listed = new LinkedHashSet<>();
+        a.policies().forEach(ref -> listed.add(ref.uri()));
+        for (String uri : own) {
             if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
                 ctx.comm().send(back.get(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
             }
         }
         completeIfReady();
+    }
+
+    /** The policy files of {@code role} itself: its role-missions and authorisations. */
+    private Set<String> ownPolicyUris(String role) {
+        Set<String> own = new LinkedHashSet<>(ctx.slots().role(role).policies());
+        own.addAll(ctx.slots().role(role).authorisations());
+        return own;
+    }
+
+    /**
+     * Fetches, from the manager that gave {@code a}, whatever the roles below the role taken need and
+     * this cell does not hold: the versions the assignment names, and any other file of the subtree.
+     */
+    private void fetchSubtreePolicies(Address from, RoleAssignment a) {
+        Set<String> own = ownPolicyUris(a.role());
+        Set<String> listed = new LinkedHashSet<>();
+        for (PolicyRef ref : a.policies()) {
+            listed.add(ref.uri());
+            if (!own.contains(ref.uri()) && !ctx.store().has(ref)) {
+                ctx.comm().send(from, new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        for (String uri : ctx.subtreePolicyUris(a.role())) {
+            if (!listed.contains(uri) && !own.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                ctx.comm().send(from, new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
     }
 
     /** Why this cell will not take a role from {@code from}, or null when it will. */
@@ -156,7 +193,11 @@ final class Assignee {
 
     private void completeIfReady() {
         Incoming in = st.incoming;
-        if (in == null || !in.assignment().policies().stream().allMatch(ctx.store()::has)
+        if (in == null) {
+            return;
+        }
+        Set<String> own = ownPolicyUris(in.assignment().role());
+        if (!in.assignment().policies().stream().filter(ref -> own.contains(ref.uri())).allMatch(ctx.store()::has)
                 || !ctx.policiesHeld(in.assignment().role())) {
             return;
         }
@@ -226,6 +267,7 @@ final class Assignee {
         seating.recomputeOwnership();
         ctx.emit(CellEvent.Kind.ACCEPTED, seat + " " + a.identity() + " from " + in.from() + ", holds " + st.seats);
         ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), true, ""));
+        fetchSubtreePolicies(in.address(), a);
         if (!a.handover().isEmpty()) {
             st.handedOver = a.handover();
             ctx.host().importTaskStates(a.role(), a.handover());
@@ -243,11 +285,14 @@ final class Assignee {
      * decide. Every cell knows the mission, so this needs nothing on the wire.
      */
     private boolean couldHoldAny(String managerRole) {
-        if (ctx.slots().mission().role(managerRole).isEmpty() && !managerRole.equals(Mission.COMMANDER)) {
-            return false;
-        }
-        return ctx.slots().managedRoles(managerRole).stream()
-                .anyMatch(r -> ctx.slots().role(r).requirement().isMetBy(ctx.description()));
+        // The mission and this vehicle's description are fixed for the cell's life: asked once per role.
+        return couldHold.computeIfAbsent(managerRole, m -> {
+            if (ctx.slots().mission().role(m).isEmpty() && !m.equals(Mission.COMMANDER)) {
+                return false;
+            }
+            return ctx.slots().managedRoles(m).stream()
+                    .anyMatch(r -> ctx.slots().role(r).requirement().isMetBy(ctx.description()));
+        });
     }
 
     /**

@@ -1,6 +1,7 @@
 package net.smc.core.cell;
 
 import java.math.BigDecimal;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -10,6 +11,7 @@ import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
+import net.smc.core.cell.TeamState.ParkedRequest;
 import net.smc.core.cell.TeamState.PendingCapability;
 import net.smc.core.cell.TeamState.Refusal;
 import net.smc.core.comm.DeliveryListener;
@@ -130,10 +132,14 @@ final class Recruiter {
         if (to.isEmpty()) {
             return;
         }
-        pending = new PendingCapability(ctx.clock().nowMillis());
-        pending.roles.add(role);
-        st.capabilityRequests.put(uav, pending);
-        ctx.comm().send(to.get(), new CapabilityRequest(role), TeamContext.failureOnly(() -> st.capabilityRequests.remove(uav)));
+        PendingCapability asked = new PendingCapability(ctx.clock().nowMillis());
+        asked.roles.add(role);
+        st.capabilityRequests.put(uav, asked);
+        ctx.comm().send(to.get(), new CapabilityRequest(role), TeamContext.failureOnly(() -> {
+            if (st.capabilityRequests.remove(uav, asked)) {
+                rediscover.run();
+            }
+        }));
     }
 
     void onCapabilityReply(Envelope env, CapabilityReply r) {
@@ -267,6 +273,12 @@ final class Recruiter {
         Optional<Seat> seat = st.owned.entrySet().stream()
                 .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
                 .map(Map.Entry::getKey).findFirst();
+        if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
+            // The vehicle declined a capability request: it took a seat from another manager since it
+            // answered discovery. The request no longer holds rediscovery back; look again now.
+            rediscover.run();
+            return;
+        }
         if (seat.isEmpty()) {
             Child child = st.children.get(vehicle);
             boolean known = child != null && child.seats.stream().anyMatch(s -> s.role().equals(r.role()));
@@ -350,11 +362,40 @@ final class Recruiter {
                     || e.version() == r.version());
         }
         Optional<Address> back = ctx.address(env.sender());
+        if (entry.isEmpty() && back.isPresent() && onItsWay(r.uri())) {
+            st.parkedPolicyRequests.computeIfAbsent(r.uri(), u -> new ArrayList<>())
+                    .add(new ParkedRequest(back.get(), env.id(), r.version(), ctx.clock().nowMillis()));
+            return; // answered when the file arrives (policyArrived)
+        }
         if (entry.isEmpty() || back.isEmpty()) {
             ctx.reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
             return;
         }
         ctx.comm().send(back.get(), new PolicyReply(env.id(), r.uri(), entry.get().version(), entry.get().text()));
+    }
+
+    /**
+     * Whether a policy file this cell does not hold is on its way to it: a file of the roles below
+     * one it holds, which it fetches from its own manager after taking the role.
+     */
+    private boolean onItsWay(String uri) {
+        return st.parent != null && st.seats.stream().anyMatch(s -> ctx.subtreePolicyUris(s.role()).contains(uri));
+    }
+
+    /** A policy file arrived: answers the children's requests that waited for it. */
+    void policyArrived(String uri) {
+        List<ParkedRequest> parked = st.parkedPolicyRequests.get(uri);
+        if (parked == null) {
+            return;
+        }
+        parked.removeIf(p -> {
+            Optional<PolicyStore.Entry> entry = ctx.store().get(uri, p.version());
+            entry.ifPresent(e -> ctx.comm().send(p.from(), new PolicyReply(p.envelopeId(), uri, e.version(), e.text())));
+            return entry.isPresent();
+        });
+        if (parked.isEmpty()) {
+            st.parkedPolicyRequests.remove(uri);
+        }
     }
 
     /** Drops stale requests and reservations, and reports each reservation that expired. */
@@ -363,6 +404,10 @@ final class Recruiter {
         st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
         st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
         st.refused.values().removeIf(r -> now - r.atMillis() >= refusalMillis());
+        st.parkedPolicyRequests.values().removeIf(parked -> {
+            parked.removeIf(p -> now - p.atMillis() > ctx.timing().failureTimeoutMillis());
+            return parked.isEmpty();
+        });
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();
             if (o.pendingFor != null && now - o.pendingSince > ctx.pendingMillis()) {

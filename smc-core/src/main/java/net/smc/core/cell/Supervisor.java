@@ -19,6 +19,7 @@ import net.smc.core.message.Status;
 import net.smc.core.mission.MissionRole;
 import net.smc.core.role.RoleLoadException;
 import net.smc.core.transport.Address;
+import net.smc.core.transport.Cancellable;
 
 /**
  * The manager's tick and its children's heartbeats: answers each heartbeat with a status (which
@@ -37,6 +38,10 @@ final class Supervisor {
     private static final int STATUS_GAP_HALF_PERIODS = 3;
     /** When {@link #rediscover} last discovered (far in the past: never). */
     private long rediscoveredMillis = Long.MIN_VALUE / 2;
+    /** A rediscovery held back by the rate limit, scheduled for when the limit allows it, or null. */
+    private Cancellable rediscoveryDue;
+    /** Whether the cell stopped: what fails as its communication stops asks for no rediscovery. */
+    private boolean stopped;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -165,13 +170,33 @@ final class Supervisor {
      * broadcast: in a large team many managers compete for the same free vehicles, and each
      * rediscovery would bring every one of them to answer again), and not within a quarter
      * heartbeat period of the last such discovery, so that vehicles refusing every offer cost at
-     * most four extra discoveries a period.
+     * most four extra discoveries a period: one asked for sooner runs when that quarter period has
+     * passed.
      */
     void rediscover() {
+        if (stopped || !st.capabilityRequests.isEmpty() || rediscoveryDue != null) {
+            return; // the decline or failure of the last request out asks again; a due one will run
+        }
         long now = ctx.clock().nowMillis();
-        if (st.capabilityRequests.isEmpty() && now - rediscoveredMillis >= ctx.timing().comTimeoutMillis() / 4) {
+        long allowedAt = rediscoveredMillis + ctx.timing().comTimeoutMillis() / 4;
+        if (now >= allowedAt) {
             rediscoveredMillis = now;
             discoverNow();
+            return;
+        }
+        // Held back by the rate limit: discovers when the limit allows, not a period later at the tick.
+        rediscoveryDue = ctx.scheduler().schedule(allowedAt - now, () -> {
+            rediscoveryDue = null;
+            rediscover();
+        });
+    }
+
+    /** The cell stops (crashes, or is shut down): a rediscovery scheduled is called off. */
+    void stop() {
+        stopped = true;
+        if (rediscoveryDue != null) {
+            rediscoveryDue.cancel();
+            rediscoveryDue = null;
         }
     }
 

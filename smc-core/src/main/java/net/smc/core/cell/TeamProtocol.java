@@ -182,7 +182,10 @@ final class TeamProtocol implements DiscoveryActions {
         route(router, MessageType.ROLE_ASSIGNMENT, RoleAssignment.class, assignee::onRoleAssignment);
         route(router, MessageType.ASSIGNMENT_RESPONSE, AssignmentResponse.class, recruiter::onAssignmentResponse);
         route(router, MessageType.POLICY_REQUEST, PolicyRequest.class, recruiter::onPolicyRequest);
-        route(router, MessageType.POLICY_REPLY, PolicyReply.class, assignee::onPolicyReply);
+        route(router, MessageType.POLICY_REPLY, PolicyReply.class, (env, r) -> {
+            assignee.onPolicyReply(env, r);
+            recruiter.policyArrived(r.uri());
+        });
         route(router, MessageType.HEARTBEAT, Heartbeat.class, supervisor::onHeartbeat);
         route(router, MessageType.STATUS, Status.class, membership::onStatus);
         route(router, MessageType.SUBTREE_REPORT, SubtreeReport.class, reports::onReport);
@@ -247,6 +250,7 @@ final class TeamProtocol implements DiscoveryActions {
         if (tickTimer != null) {
             tickTimer.cancel();
         }
+        supervisor.stop();
     }
 
     /** Leaves the team gracefully: tells parent and children, gives up every role, answers no discovery. */

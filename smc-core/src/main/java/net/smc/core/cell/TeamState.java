@@ -59,6 +59,11 @@ final class TeamState {
     final Map<String, Child> children = new TreeMap<>();
     final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
     final Map<String, Heard> heard = new HashMap<>();
+    /**
+     * Children's requests for policy files of this cell's subtree that are still on their way to it
+     * (it fetches them after taking its role), by URI: answered when the file arrives (Recruiter).
+     */
+    final Map<String, List<ParkedRequest>> parkedPolicyRequests = new HashMap<>();
     /** Free vehicles this cell's policies passed over when they were discovered, by vehicle (Recruiter). */
     final Map<String, Refusal> refused = new HashMap<>();
     final Map<String, List<Object>> handover = new HashMap<>();
@@ -82,6 +87,10 @@ final class TeamState {
     }
 
     record Incoming(String from, Address address, long envelopeId, RoleAssignment assignment, long sinceMillis) {
+    }
+
+    /** A child's policy request waiting for the file to reach this cell. */
+    record ParkedRequest(Address from, long envelopeId, int version, long atMillis) {
     }
 
     record Heard(CapabilitySummary summary, long atMillis) {

@@ -165,6 +165,12 @@ public final class IdealAuthentication {
 
     /** Counter and tag, 8 bytes each. */
     static final int SEAL_BYTES = 16;
+    /**
+     * Where the payload (the encoded message) starts in a sealed datagram: after the 8-byte counter.
+     * For what reads datagrams on the simulated network below this layer (a CPU model charging by
+     * message type, say).
+     */
+    public static final int PAYLOAD_OFFSET = 8;
     private static final long FRESHNESS_MILLIS = SecuritySettings.DEFAULTS.freshnessWindowMillis();
     private static final int REPLAY_WINDOW = SecuritySettings.DEFAULTS.replayWindow();
 

@@ -3,13 +3,12 @@ package net.smc.sim.experiment;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.GeneralSecurityException;
-import java.security.KeyPair;
-import java.security.KeyPairGenerator;
 import java.security.SecureRandom;
 
-import javax.crypto.KeyAgreement;
 import javax.crypto.Mac;
 import javax.crypto.spec.SecretKeySpec;
+
+import org.bouncycastle.math.ec.rfc7748.X25519;
 
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Heartbeat;
@@ -23,8 +22,9 @@ import net.smc.policy.RunResult;
 
 /**
  * Measures, on this machine, what the operations {@link CpuCharge} charges cost this engine (the
- * project's Ed25519 keys and codec, the JDK's HMAC-SHA256 and X25519 as the security layer uses
- * them, the PonderTalk engine loading a generated role-mission and offering an event to policies):
+ * project's Ed25519 keys and codec, the JDK's HMAC-SHA256 and Bouncy Castle's X25519 as the security
+ * layer uses them, the PonderTalk engine loading a generated role-mission into a booted engine and
+ * offering an event to policies):
  * the calibration step of the set-up time experiment. Each operation is warmed up for half a second
  * (so the JIT has compiled it), then timed in several batches of at least 50 ms, and the fastest
  * batch is kept: on a machine shared with other work the fastest batch is the one least slowed by
@@ -54,14 +54,22 @@ public final class Calibration {
         double sign = time(20, () -> key.sign(msg));
         double verify = time(20, () -> pub.verify(msg, sig));
 
-        KeyPairGenerator x = KeyPairGenerator.getInstance("X25519");
-        KeyPair a = x.generateKeyPair();
-        KeyPair b = x.generateKeyPair();
+        // One side of a first contact: a fresh ephemeral key pair and the agreement with the peer's
+        // public value (net.smc.core.security's handshake, by the same Bouncy Castle RFC 7748 code).
+        byte[] peerScalar = new byte[X25519.SCALAR_SIZE];
+        new SecureRandom(new byte[] {2}).nextBytes(peerScalar);
+        byte[] peerPublic = new byte[X25519.POINT_SIZE];
+        X25519.generatePublicKey(peerScalar, 0, peerPublic, 0);
+        SecureRandom random = new SecureRandom(new byte[] {3});
         double agree = time(20, () -> {
-            KeyAgreement ka = KeyAgreement.getInstance("X25519");
-            ka.init(a.getPrivate());
-            ka.doPhase(b.getPublic(), true);
-            ka.generateSecret();
+            byte[] scalar = new byte[X25519.SCALAR_SIZE];
+            random.nextBytes(scalar);
+            byte[] mine = new byte[X25519.POINT_SIZE];
+            X25519.generatePublicKey(scalar, 0, mine, 0);
+            byte[] secret = new byte[X25519.POINT_SIZE];
+            if (!X25519.calculateAgreement(scalar, 0, peerPublic, 0, secret, 0)) {
+                throw new IllegalStateException("X25519 agreement failed");
+            }
         });
 
         Mac mac = Mac.getInstance("HmacSHA256");
@@ -85,17 +93,9 @@ public final class Calibration {
         double codecFixed = Math.max(0, codecSmall - codecPerByte * hbBytes);
 
         String boot = Files.readString(bootEvents);
-        RoleType manager = mission.roles().get(0);
-        String text = Files.readString(mission.repository().resolve("roles/" + manager.name() + "/mission.p2"));
-        String domains = "root at: \"role\" put: root/factory/domain create.\n"
-                + "root/role at: \"" + manager.name() + "\" put: root/factory/domain create.\n"
-                + "root/role/" + manager.name() + " at: \"policy\" put: root/factory/domain create.\n";
-        double loadPerByte = time(20, () -> {
-            PolicyEngine cell = PolicyEngine.builder().build();
-            check(cell.run("boot", boot));
-            check(cell.run("domains", domains));
-            check(cell.run("mission", text));
-        }) / text.length();
+        // What a vehicle does when it takes a role, per byte of the role's policy text.
+        RoleLoadWork load = new RoleLoadWork(bootEvents, mission);
+        double loadPerByte = time(20, load::loadAndWithdraw) / load.bytes();
 
         int policies = 20;
         PolicyEngine cell = PolicyEngine.builder().build();

@@ -5,12 +5,14 @@ import java.util.BitSet;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
+import java.util.function.BiPredicate;
 import java.util.function.ToIntFunction;
 
 import net.smc.core.message.MessageType;
 import net.smc.core.message.WireFormat;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.CpuModel;
+import net.smc.sim.experiment.CpuLedger.Category;
 
 /**
  * The CPU a cell spends per datagram, from measured per-operation {@link CpuCosts}, for the
@@ -22,8 +24,10 @@ import net.smc.core.transport.sim.CpuModel;
  *       MAC'd (HMAC-SHA256) by both ends;</li>
  *   <li>the first datagram between two cells costs a key agreement (X25519) at each end, a signature
  *       at the sender and the credential's verification at the receiver;</li>
- *   <li>a {@code PolicyReply} costs its receiver the parsing and loading of the policy text it
- *       carries (per byte of payload);</li>
+ *   <li>a {@code PolicyReply} of a policy its receiver loads (given by {@code loads}: the files of
+ *       the role it takes, not the copies a manager keeps to serve the roles below it or a backup
+ *       commander keeps of the mission) costs the parsing and loading of the text it carries, per
+ *       byte of the datagram (of the whole message when fragmented, charged with its first fragment);</li>
  *   <li>a {@code DiscoveryReply} costs its receiver one condition per {@code newUAV} policy it runs
  *       (given by {@code newUavPolicies} from the receiving vehicle's id).</li>
  * </ul>
@@ -34,19 +38,34 @@ public final class CpuCharge implements CpuModel {
     private static final int TYPE_OFFSET = 3;
     private static final int SENDER_LENGTH_OFFSET = 4;
 
+    /** Where the encoded message starts in a datagram on the network (after the transport's seal, if any). */
+    private final int payloadOffset;
+
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
+    private final BiPredicate<String, String> loads;
     /** What is known of each address that sent or received: its number, vehicle and contacts. */
     private final Map<Address, Node> nodes = new HashMap<>();
+    private final CpuLedger ledger = new CpuLedger();
     private long datagrams;
     private long bytes;
 
     /**
      * @param newUavPolicies how many {@code newUAV} policies the vehicle with this id runs
+     * @param loads          whether the vehicle with this id (first) loads the policy of this URI (second)
+     * @param payloadOffset  where the encoded message starts in a datagram as the network carries it:
+     *                       {@code IdealAuthentication.PAYLOAD_OFFSET} on a team simulation's network
+     *                       (its seal comes first), 0 for bare messages
      */
-    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies) {
+    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+                     int payloadOffset) {
+        if (payloadOffset < 0) {
+            throw new IllegalArgumentException("payload offset " + payloadOffset + " must be 0 or more");
+        }
+        this.payloadOffset = payloadOffset;
         this.costs = Objects.requireNonNull(costs, "costs");
         this.newUavPolicies = Objects.requireNonNull(newUavPolicies, "newUavPolicies");
+        this.loads = Objects.requireNonNull(loads, "loads");
     }
 
     @Override
@@ -56,14 +75,16 @@ public final class CpuCharge implements CpuModel {
         Node node = node(at);
         if (node.vehicle == null) {
             node.vehicle = sender(data);
+            ledger.name(node.number, node.vehicle);
         }
-        double ns = codec(data.length);
+        ledger.sent(type(data), data.length);
+        double ns = charge(node, Category.CODEC, codec(data.length));
         if (to == null) {
-            ns += costs.signNanos();
+            ns += charge(node, Category.SIGN, costs.signNanos());
         } else {
-            ns += mac(data.length);
+            ns += charge(node, Category.MAC, mac(data.length));
             if (node.firstContact(node(to))) {
-                ns += costs.signNanos() + costs.agreeNanos();
+                ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
             }
         }
         return micros(ns);
@@ -71,19 +92,32 @@ public final class CpuCharge implements CpuModel {
 
     @Override
     public long receiveMicros(Address at, Address from, byte[] data, boolean broadcast) {
-        double ns = codec(data.length) + (broadcast ? costs.verifyNanos() : mac(data.length));
         Node node = node(at);
+        double ns = charge(node, Category.CODEC, codec(data.length))
+                + (broadcast ? charge(node, Category.VERIFY, costs.verifyNanos()) : charge(node, Category.MAC, mac(data.length)));
         if (node.firstContact(node(from))) {
-            ns += costs.verifyNanos() + costs.agreeNanos();
+            ns += charge(node, Category.HANDSHAKE, costs.verifyNanos() + costs.agreeNanos());
         }
         int type = type(data);
+        ledger.received(node.number, type);
         if (type == MessageType.POLICY_REPLY.code()) {
-            ns += costs.loadNanosPerByte() * data.length;
+            ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * loadedBytes(node, data));
         } else if (type == MessageType.DISCOVERY_REPLY.code()) {
             String vehicle = node.vehicle;
-            ns += costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle));
+            ns += charge(node, Category.CONDITION,
+                    costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle)));
         }
         return micros(ns);
+    }
+
+    private double charge(Node node, Category category, double ns) {
+        ledger.charge(node.number, category, ns);
+        return ns;
+    }
+
+    /** Where the charged CPU went, per cell and category, and the datagrams by kind. */
+    public CpuLedger ledger() {
+        return ledger;
     }
 
     /** Datagrams sent so far (a broadcast counts once). */
@@ -104,26 +138,64 @@ public final class CpuCharge implements CpuModel {
         return costs.macNanos() + costs.macNanosPerByte() * length;
     }
 
-    /** The message type of a datagram; for a fragment, the type of the message it is a piece of. */
-    static int type(byte[] data) {
-        if (data.length <= SENDER_LENGTH_OFFSET) {
+    /** The message type of a datagram; for a fragment, the type of the message it is a piece of; -1 if unreadable. */
+    int type(byte[] data) {
+        int at = payloadOffset;
+        if (data.length <= at + SENDER_LENGTH_OFFSET) {
             return -1;
         }
-        int type = data[TYPE_OFFSET] & 0xFF;
+        int type = data[at + TYPE_OFFSET] & 0xFF;
         if (type != WireFormat.FRAGMENT_CODE) {
             return type;
         }
-        int payload = SENDER_LENGTH_OFFSET + 1 + (data[SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
+        int payload = at + SENDER_LENGTH_OFFSET + 1 + (data[at + SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
         return payload < data.length ? data[payload] & 0xFF : -1;
     }
 
-    private static String sender(byte[] data) {
-        if (data.length <= SENDER_LENGTH_OFFSET) {
+    /**
+     * The bytes of policy text a {@code PolicyReply} datagram gives {@code node} to load: the datagram's
+     * length (a fragment's first: the whole message's) when the receiver loads the policy it names, else 0.
+     */
+    private int loadedBytes(Node node, byte[] data) {
+        int at = payloadOffset;
+        int payload = at + WireFormat.FIXED_HEADER + (data[at + SENDER_LENGTH_OFFSET] & 0xFF);
+        int length = data.length;
+        if ((data[at + TYPE_OFFSET] & 0xFF) == WireFormat.FRAGMENT_CODE) {
+            if (payload + WireFormat.FRAGMENT_HEADER > data.length || u16(data, payload + 1) != 0) {
+                return 0; // not the first fragment: the message was charged with that one
+            }
+            length = (int) Math.min(Integer.MAX_VALUE, u32(data, payload + 5));
+            payload += WireFormat.FRAGMENT_HEADER;
+        }
+        int uriAt = payload + 8; // after the request id it answers
+        if (uriAt >= data.length || node.vehicle == null) {
+            return 0;
+        }
+        int n = data[uriAt] & 0xFF;
+        if (uriAt + 1 + n > data.length) {
+            return 0;
+        }
+        String uri = new String(data, uriAt + 1, n, StandardCharsets.UTF_8);
+        return loads.test(node.vehicle, uri) ? length : 0;
+    }
+
+    private static int u16(byte[] b, int at) {
+        return (b[at] & 0xFF) << 8 | (b[at + 1] & 0xFF);
+    }
+
+    private static long u32(byte[] b, int at) {
+        return (long) u16(b, at) << 16 | u16(b, at + 2);
+    }
+
+    /** The vehicle named as a datagram's sender, or "" if unreadable. */
+    String sender(byte[] data) {
+        int at = payloadOffset;
+        if (data.length <= at + SENDER_LENGTH_OFFSET) {
             return "";
         }
-        int n = data[SENDER_LENGTH_OFFSET] & 0xFF;
-        return n <= data.length - SENDER_LENGTH_OFFSET - 1
-                ? new String(data, SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
+        int n = data[at + SENDER_LENGTH_OFFSET] & 0xFF;
+        return n <= data.length - at - SENDER_LENGTH_OFFSET - 1
+                ? new String(data, at + SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
     }
 
     private Node node(Address address) {

@@ -74,6 +74,16 @@ public record GeneratedMission(Path directory, TreeShape shape, List<RoleType> r
         return managedBy(role, scheme).size();
     }
 
+    /**
+     * Whether the vehicle {@code vehicle} loads the policy {@code uri} into its engine: it does for the
+     * policy files of the role it was built for; the others it receives (a manager's copies of the
+     * roles below it, served to its children; a backup commander's copy of the mission's) it only keeps.
+     */
+    public boolean loadsPolicy(String vehicle, String uri) {
+        String role = vehicle.equals(COMMANDER) ? "commander" : RoleType.roleOfVehicle(vehicle).orElse(null);
+        return role != null && uri.startsWith("policy:/roles/" + role + "/");
+    }
+
     /** Role name to role, for look-ups. */
     public Map<String, RoleType> byName() {
         Map<String, RoleType> m = new LinkedHashMap<>();

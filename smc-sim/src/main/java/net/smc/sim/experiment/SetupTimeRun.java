@@ -1,14 +1,18 @@
 package net.smc.sim.experiment;
 
 import java.util.HashSet;
+import java.util.Locale;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.function.Consumer;
 
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
 import net.smc.sim.team.TeamSimulation;
 import net.smc.core.mission.Mission;
+import net.smc.core.security.IdealAuthentication;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.policy.api.PolicyRepository;
@@ -37,14 +41,26 @@ public final class SetupTimeRun {
      */
     public static SetupResult run(GeneratedMission generated, Mission mission, Scheme scheme, int run, long seed,
                                   RadioNetwork radio, CpuCosts costs, long limitMillis) {
+        return run(generated, mission, scheme, run, seed, radio, costs, limitMillis, report -> { });
+    }
+
+    /**
+     * As {@link #run(GeneratedMission, Mission, Scheme, int, long, RadioNetwork, CpuCosts, long)}, and
+     * hands {@code report} a diagnostic of the run: when the roles of each level of the tree
+     * started, and where the charged CPU went and which kinds of message travelled ({@link CpuLedger#report}).
+     */
+    public static SetupResult run(GeneratedMission generated, Mission mission, Scheme scheme, int run, long seed,
+                                  RadioNetwork radio, CpuCosts costs, long limitMillis, Consumer<String> report) {
         Objects.requireNonNull(scheme, "scheme");
         if (limitMillis <= 0) {
             throw new IllegalArgumentException("time limit " + limitMillis + " ms must be above 0");
         }
-        Progress progress = new Progress(generated.seats() - 1);
+        Progress progress = new Progress(generated.seats() - 1, generated.byName());
         TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(generated.repository()), seed)
                 .vehicles(generated.vehicles()).scheme(scheme).link(radio.link()).listener(progress).build();
-        CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme));
+        // The team simulation seals every datagram (IdealAuthentication): the message follows the seal's counter.
+        CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
+                IdealAuthentication.PAYLOAD_OFFSET);
         InMemoryNetwork network = sim.network();
         network.setCpuModel(charge);
         network.setBandwidth(radio.bytesPerSecond());
@@ -54,20 +70,25 @@ public final class SetupTimeRun {
         for (Address a : network.attached()) {
             busiest = Math.max(busiest, network.cpuMicros(a));
         }
+        report.accept(progress.levels() + charge.ledger().report());
         double setup = progress.complete() && progress.start >= 0 ? progress.end - progress.start : -1;
         return new SetupResult(generated.seats(), scheme, "sim", run, setup, charge.datagrams(), charge.bytes(),
                 busiest / 1_000.0, progress.seats.size());
     }
 
-    /** Follows the cells' events: the commander's start, and each seat's first acceptance. */
+    /** Follows the cells' events: the commander's start, and each seat's first acceptance (by level of the tree). */
     private static final class Progress implements Consumer<CellEvent> {
         final Set<String> seats = new HashSet<>();
         final int needed;
+        final Map<String, RoleType> roles;
+        /** Per level: when its first and its last seat was first accepted. */
+        final TreeMap<Integer, long[]> levels = new TreeMap<>();
         long start = -1;
         long end = -1;
 
-        Progress(int needed) {
+        Progress(int needed, Map<String, RoleType> roles) {
             this.needed = needed;
+            this.roles = roles;
         }
 
         @Override
@@ -76,14 +97,35 @@ public final class SetupTimeRun {
                 start = e.timeMillis();
             } else if (e.kind() == CellEvent.Kind.ACCEPTED) {
                 int space = e.detail().indexOf(' ');
-                if (seats.add(space < 0 ? e.detail() : e.detail().substring(0, space)) && seats.size() == needed) {
-                    end = e.timeMillis();
+                String seat = space < 0 ? e.detail() : e.detail().substring(0, space);
+                if (seats.add(seat)) {
+                    level(seat, e.timeMillis());
+                    if (seats.size() == needed) {
+                        end = e.timeMillis();
+                    }
                 }
+            }
+        }
+
+        private void level(String seat, long at) {
+            int hash = seat.indexOf('#');
+            RoleType role = roles.get(hash < 0 ? seat : seat.substring(0, hash));
+            if (role != null) {
+                long[] span = levels.computeIfAbsent(role.level(), l -> new long[] {at, at});
+                span[1] = at;
             }
         }
 
         boolean complete() {
             return seats.size() >= needed;
+        }
+
+        /** One line: per level of the tree, when its first and last role started, ms after the commander's start. */
+        String levels() {
+            StringBuilder s = new StringBuilder("roles started, ms after the commander's start, by level:");
+            levels.forEach((level, span) -> s.append(String.format(Locale.ROOT, " L%d %d-%d", level, span[0] - start,
+                    span[1] - start)));
+            return s.append('\n').toString();
         }
     }
 }

@@ -63,7 +63,9 @@ class DiscoveryFilterTest {
                 SimVehicle.detector("d1")));
         List<String> replies = discoveryReplies(sim);
         sim.start();
-        boolean seated = sim.runUntil(() -> !sim.cell("d1").seats().isEmpty() && !sim.cell("s1").seats().isEmpty(), 20_000);
+        // Until s1 has heard d1's acceptance too (d1 holds its seat a little before its manager knows).
+        boolean seated = sim.runUntil(() -> !sim.cell("d1").seats().isEmpty() && !sim.cell("s1").seats().isEmpty()
+                && sim.cell("s1").children().containsKey("d1"), 20_000);
         assertTrue(seated, () -> String.join("\n", sim.trace()));
         assertTrue(replies.contains("s1>cdr"), () -> "replies " + replies);
         assertTrue(replies.contains("d1>s1"), () -> "replies " + replies);

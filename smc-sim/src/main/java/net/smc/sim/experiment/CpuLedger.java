@@ -1,0 +1,175 @@
+package net.smc.sim.experiment;
+
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+import net.smc.core.message.MessageType;
+
+/**
+ * Where the CPU charged by {@link CpuCharge} went and what travelled: per cell, the charged time by
+ * {@link Category} and the datagrams received by message kind; for the whole team, the datagrams and
+ * bytes sent by kind. The diagnostic behind the experiment's {@code --verbose} report: it names the
+ * busiest cell and what kept it busy, and which kinds of message the set-up exchanged.
+ */
+public final class CpuLedger {
+    /** What a charged nanosecond was spent on. */
+    public enum Category {
+        /** Encoding and decoding messages. */
+        CODEC,
+        /** Ed25519 signatures of broadcasts. */
+        SIGN,
+        /** Ed25519 verifications of broadcasts. */
+        VERIFY,
+        /** HMAC-SHA256 of unicasts, at both ends. */
+        MAC,
+        /** First contact between two cells: signature, credential verification and X25519 agreement. */
+        HANDSHAKE,
+        /** Parsing and loading policy text. */
+        POLICY_LOAD,
+        /** Offering {@code newUAV} to obligation policies. */
+        CONDITION
+    }
+
+    private static final int KINDS = 256;
+    private static final Category[] CATEGORIES = Category.values();
+
+    private final List<double[]> nanos = new ArrayList<>();
+    private final List<long[]> received = new ArrayList<>();
+    private final List<String> names = new ArrayList<>();
+    private final long[] sentCount = new long[KINDS];
+    private final long[] sentBytes = new long[KINDS];
+
+    /** Adds {@code ns} of {@code category} to cell number {@code node} (numbered from 0 as first seen). */
+    void charge(int node, Category category, double ns) {
+        grow(node);
+        nanos.get(node)[category.ordinal()] += ns;
+    }
+
+    void sent(int type, int length) {
+        if (type >= 0) {
+            sentCount[type]++;
+            sentBytes[type] += length;
+        }
+    }
+
+    void received(int node, int type) {
+        grow(node);
+        if (type >= 0) {
+            received.get(node)[type]++;
+        }
+    }
+
+    void name(int node, String vehicle) {
+        grow(node);
+        names.set(node, vehicle);
+    }
+
+    private void grow(int node) {
+        while (nanos.size() <= node) {
+            nanos.add(new double[CATEGORIES.length]);
+            received.add(new long[KINDS]);
+            names.add(null);
+        }
+    }
+
+    /** The cell charged the most CPU, or -1 when none was charged. */
+    public int busiest() {
+        int best = -1;
+        double most = -1;
+        for (int i = 0; i < nanos.size(); i++) {
+            double t = total(i);
+            if (t > most) {
+                most = t;
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    /** The vehicle that sends from cell {@code node}, or {@code "?"} when it never sent. */
+    public String name(int node) {
+        String n = node < names.size() ? names.get(node) : null;
+        return n == null ? "?" : n;
+    }
+
+    /** Charged CPU of cell {@code node}, ms. */
+    public double totalMillis(int node) {
+        return total(node) / 1e6;
+    }
+
+    /** Charged CPU of cell {@code node} by category, ms (categories with none left out). */
+    public Map<Category, Double> millisByCategory(int node) {
+        Map<Category, Double> m = new EnumMap<>(Category.class);
+        if (node >= 0 && node < nanos.size()) {
+            double[] n = nanos.get(node);
+            for (Category c : CATEGORIES) {
+                if (n[c.ordinal()] > 0) {
+                    m.put(c, n[c.ordinal()] / 1e6);
+                }
+            }
+        }
+        return m;
+    }
+
+    /** Datagrams cell {@code node} received, by message kind (a fragment counts as its message's kind). */
+    public Map<String, Long> receivedByKind(int node) {
+        return node >= 0 && node < received.size() ? byKind(received.get(node)) : Map.of();
+    }
+
+    /** Datagrams the team sent, by kind (a broadcast once). */
+    public Map<String, Long> sentByKind() {
+        return byKind(sentCount);
+    }
+
+    /** Bytes the team sent, by kind. */
+    public Map<String, Long> sentBytesByKind() {
+        return byKind(sentBytes);
+    }
+
+    private double total(int node) {
+        double t = 0;
+        for (double v : nanos.get(node)) {
+            t += v;
+        }
+        return t;
+    }
+
+    private static Map<String, Long> byKind(long[] counts) {
+        Map<String, Long> m = new TreeMap<>();
+        for (int code = 0; code < KINDS; code++) {
+            if (counts[code] > 0) {
+                m.put(kindName(code), counts[code]);
+            }
+        }
+        return m;
+    }
+
+    static String kindName(int code) {
+        try {
+            return MessageType.fromCode(code).name();
+        } catch (IllegalArgumentException e) {
+            return String.format(Locale.ROOT, "0x%02x", code);
+        }
+    }
+
+    /** A few lines: the busiest cell's charged CPU by category and its inbox by kind, and the team's traffic by kind. */
+    public String report() {
+        int b = busiest();
+        StringBuilder s = new StringBuilder();
+        if (b < 0) {
+            return "no CPU charged\n";
+        }
+        s.append(String.format(Locale.ROOT, "busiest cell %s: %.1f ms charged CPU:", name(b), totalMillis(b)));
+        millisByCategory(b).forEach((c, ms) -> s.append(String.format(Locale.ROOT, " %s %.1f", c.name().toLowerCase(Locale.ROOT), ms)));
+        s.append("\n  it received:");
+        receivedByKind(b).forEach((k, n) -> s.append(' ').append(k).append(' ').append(n));
+        s.append("\nteam sent (datagrams/bytes):");
+        Map<String, Long> bytes = sentBytesByKind();
+        sentByKind().forEach((k, n) -> s.append(' ').append(k).append(' ').append(n).append('/').append(bytes.get(k)));
+        return s.append('\n').toString();
+    }
+}

@@ -1,0 +1,102 @@
+package net.smc.sim.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+
+import net.smc.core.message.Envelope;
+import net.smc.core.message.MessageEncoder;
+import net.smc.core.message.PolicyReply;
+import net.smc.core.security.IdealAuthentication;
+import net.smc.core.transport.Address;
+import net.smc.sim.experiment.CpuLedger.Category;
+
+class CpuChargeTest {
+    private static final CpuCosts COSTS = new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500);
+    private final Address manager = Address.of("10.0.0.1", 7000);
+    private final Address vehicle = Address.of("10.0.0.2", 7000);
+
+    /** A policy reply as the team simulation's network carries it: behind the seal's 8-byte counter, with an 8-byte tag after. */
+    private static byte[] sealedPolicyReply(String sender) {
+        return sealedPolicyReply(sender, "policy:/roles/b0l1/mission", 300).get(0);
+    }
+
+    private static List<byte[]> sealedPolicyReply(String sender, String uri, int textLength) {
+        List<byte[]> sealed = new ArrayList<>();
+        for (byte[] message : new MessageEncoder().datagrams(new Envelope(sender, 7, new PolicyReply(1, uri, 1,
+                "x".repeat(textLength))))) {
+            sealed.add(ByteBuffer.allocate(message.length + 16).putLong(42).put(message).putLong(99).array());
+        }
+        return sealed;
+    }
+
+    /** Vehicle b0l1n0 loads the files of role b0l1 and nothing else. */
+    private static boolean loads(String vehicle, String uri) {
+        return vehicle.equals("b0l1n0") && uri.startsWith("policy:/roles/b0l1/");
+    }
+
+    /** The receiver has to have sent once for the charge to know which vehicle it is. */
+    private static void introduce(CpuCharge charge, Address at, String vehicle) {
+        charge.sendMicros(at, null, sealedPolicyReply(vehicle, "policy:/roles/none/mission", 10).get(0));
+    }
+
+    @Test
+    void onlyThePoliciesTheReceiverLoadsAreChargedTheirLoadingAFragmentedOneOnceInFull() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, CpuChargeTest::loads, IdealAuthentication.PAYLOAD_OFFSET);
+        introduce(charge, vehicle, "b0l1n0");
+        introduce(charge, manager, "cdr");
+        for (byte[] d : sealedPolicyReply("cdr", "policy:/roles/b0l2/mission", 300)) {
+            charge.receiveMicros(vehicle, manager, d, false);
+        }
+        assertFalse(charge.ledger().millisByCategory(0).containsKey(Category.POLICY_LOAD), "a copy kept to serve a child");
+        List<byte[]> fragments = sealedPolicyReply("cdr", "policy:/roles/b0l1/auth", 3_000);
+        assertTrue(fragments.size() > 2, "fragments: " + fragments.size());
+        for (byte[] d : fragments) {
+            charge.receiveMicros(vehicle, manager, d, false);
+        }
+        double expected = COSTS.loadNanosPerByte() * (3_000 + "policy:/roles/b0l1/auth".length() + 8 + 1 + 4 + 4) / 1e6;
+        assertEquals(expected, charge.ledger().millisByCategory(0).get(Category.POLICY_LOAD), expected * 0.02);
+    }
+
+    @Test
+    void aSealedPolicyReplyIsChargedItsLoadingAndNamesItsSender() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        byte[] reply = sealedPolicyReply("b0l1n0");
+        charge.sendMicros(manager, vehicle, reply);
+        charge.sendMicros(vehicle, manager, reply);
+        long micros = charge.receiveMicros(vehicle, manager, reply, false);
+        CpuLedger ledger = charge.ledger();
+        Map<Category, Double> received = ledger.millisByCategory(1);
+        assertEquals(COSTS.loadNanosPerByte() * reply.length / 1e6, received.get(Category.POLICY_LOAD), 1e-9);
+        assertTrue(micros >= Math.round(COSTS.loadNanosPerByte() * reply.length / 1_000), () -> micros + " us");
+        assertEquals("b0l1n0", ledger.name(0));
+        assertEquals(Map.of("POLICY_REPLY", 1L), ledger.receivedByKind(1));
+        assertEquals(Map.of("POLICY_REPLY", 2L), ledger.sentByKind());
+    }
+
+    @Test
+    void readAtTheWrongOffsetTheReplyIsNotRecognised() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, 0);
+        byte[] reply = sealedPolicyReply("b0l1n0");
+        charge.receiveMicros(vehicle, manager, reply, false);
+        assertFalse(charge.ledger().millisByCategory(0).containsKey(Category.POLICY_LOAD));
+    }
+
+    @Test
+    void firstContactIsAHandshakeOnceAndTheBusiestCellIsTheOneChargedMost() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        byte[] reply = sealedPolicyReply("b0l1n0");
+        charge.receiveMicros(vehicle, manager, reply, false);
+        charge.receiveMicros(vehicle, manager, reply, false);
+        double handshake = charge.ledger().millisByCategory(0).get(Category.HANDSHAKE);
+        assertEquals((COSTS.verifyNanos() + COSTS.agreeNanos()) / 1e6, handshake, 1e-9);
+        assertEquals(0, charge.ledger().busiest());
+    }
+}
