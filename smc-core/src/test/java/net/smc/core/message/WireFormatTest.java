@@ -15,10 +15,17 @@ class WireFormatTest {
     }
 
     @Test
-    void heartbeat_isHeaderThenRoleEpochState() {
-        byte[] d = codec.datagram(new Envelope("uav1", 7, new Heartbeat("relay", 42, 1)));
-        assertEquals("53 4d 01 09 04 75 61 76 31 00 00 00 00 00 00 00 07 00 12 "   // magic, version, type, sender, id, length
-                + "05 72 65 6c 61 79 00 00 00 00 00 00 00 2a 00 00 00 01", hex(d));  // role, epoch, state
+    void heartbeat_isHeaderThenRoleThenVarintEpochStateAndStatusVersion() {
+        byte[] d = codec.datagram(new Envelope("uav1", 7, new Heartbeat("relay", 42, 1, 300)));
+        assertEquals("53 4d 01 09 04 75 61 76 31 00 00 00 00 00 00 00 07 00 0a "   // magic, version, type, sender, id, length
+                + "05 72 65 6c 61 79 2a 01 ac 02", hex(d));  // role, epoch 42, state 1, status version 300 (0x2c | 0x80, 0x02)
+    }
+
+    @Test
+    void echo_isHeaderThenTheEchoedId() {
+        byte[] d = codec.datagram(new Envelope("uav1", 8, new Echo(7)));
+        assertEquals("53 4d 01 14 04 75 61 76 31 00 00 00 00 00 00 00 08 00 08 "
+                + "00 00 00 00 00 00 00 07", hex(d));
     }
 
     @Test
