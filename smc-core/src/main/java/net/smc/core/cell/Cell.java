@@ -381,6 +381,11 @@ public final class Cell {
         return protocol.children();
     }
 
+    /** Whether {@code vehicle} is among {@link #children()}, without building them. */
+    public boolean hasChild(String vehicle) {
+        return protocol.hasChild(vehicle);
+    }
+
     /** For the acting commander, the mission's state. */
     public Optional<MissionState> missionState() {
         return protocol.missionState();

@@ -372,6 +372,10 @@ final class TeamProtocol implements DiscoveryActions {
         return reports.children();
     }
 
+    boolean hasChild(String vehicle) {
+        return reports.hasChild(vehicle);
+    }
+
     Optional<String> commander() {
         return reports.commander();
     }
