@@ -37,7 +37,7 @@ final class Membership {
     private final TeamCounts counts;
     private final BackupCommander backup;
     private final Reports reports;
-    /** Send times of recent heartbeats, by envelope id, to date the parent's echoes. */
+    /** Send times of recent heartbeats, by their {@linkplain Echo#tagOf tag}, to date the parent's echoes. */
     private final Map<Long, Long> heartbeatSentAt = new LinkedHashMap<>(32, 0.75f, false) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
@@ -88,7 +88,7 @@ final class Membership {
         // The heartbeat's state field carries the slot of the primary seat, so the parent knows the exact seat.
         long held = st.parent.vehicle().equals(st.statusVersionFrom) ? st.statusVersionHeld : 0;
         long id = ctx.comm().send(st.parent.address(), new Heartbeat(st.seats.get(0).role(), st.epoch, st.seats.get(0).slot(), held));
-        heartbeatSentAt.put(id, now);
+        heartbeatSentAt.put(Echo.tagOf(id), now);
         List<Object> report = reports.reportValues();
         boolean send;
         if (!report.equals(lastReport)) {
@@ -113,7 +113,7 @@ final class Membership {
         }
         String from = env.sender();
         if (st.parent != null && st.parent.vehicle().equals(from)) {
-            renew(s.echo());
+            renew(s.echo() == 0 ? 0 : Echo.tagOf(s.echo()));
             st.statusVersionHeld = s.version();
             st.statusVersionFrom = from;
             st.epoch = s.epoch();
@@ -157,10 +157,10 @@ final class Membership {
         }
     }
 
-    /** The parent was heard; its echo of a heartbeat renews the lease from that heartbeat's sending. */
-    private void renew(long echo) {
+    /** The parent was heard; its echo of a heartbeat (by its tag; 0: none) renews the lease from that heartbeat's sending. */
+    private void renew(long tag) {
         st.lastStatusMillis = ctx.clock().nowMillis();
-        Long sentAt = heartbeatSentAt.get(echo);
+        Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
         if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
             st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
             st.lapseNoted = false;

@@ -105,7 +105,7 @@ final class Supervisor {
             long echo = child.consistent ? child.lastHeartbeat : 0;
             long version = statusVersion();
             if (child.statusVersionHeld == version) {
-                ctx.send(child.address, new Echo(echo));
+                ctx.send(child.address, new Echo(echo == 0 ? 0 : Echo.tagOf(echo)));
             } else {
                 StatusContent c = st.statusContent;
                 ctx.send(child.address, new Status(ctx.missionId(), c.identity(), c.commander(), c.epoch(), c.teamSize(), echo,

@@ -39,8 +39,8 @@ final class ExchangeBodies {
             r -> new Heartbeat(r.name("role"), r.varint("epoch"), intVarint(r, "state"), r.varint("statusVersion")));
 
     static final BodyCodec<Echo> ECHO = new BodyCodec<>(MessageType.ECHO, Echo.class,
-            (m, w) -> w.i64(m.echo()),
-            r -> new Echo(r.i64("echo")));
+            (m, w) -> w.i32((int) m.echo()),
+            r -> new Echo(Integer.toUnsignedLong(r.i32("echo"))));
 
     static final BodyCodec<Ack> ACK = new BodyCodec<>(MessageType.ACK, Ack.class,
             (m, w) -> w.i64(m.acked()),

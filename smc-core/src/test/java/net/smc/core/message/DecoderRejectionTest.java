@@ -135,9 +135,9 @@ class DecoderRejectionTest {
     }
 
     @Test
-    void negativeEcho_isAnInvalidFieldNamedByTheRecord() {
-        reject(Raw.of(MessageType.ECHO).i64(-5).datagram(), RejectReason.INVALID_FIELD,
-                "ECHO from 'uav1' (id 7): Echo.echo is -5; it must be 0 or more");
+    void echoOfEightBytes_isMalformed() {
+        reject(Raw.of(MessageType.ECHO).i64(5).datagram(), RejectReason.MALFORMED,
+                "ECHO from 'uav1' (id 7): 4 bytes follow the last field");
     }
 
     @Test

@@ -158,7 +158,7 @@ final class Samples {
                 new Heartbeat("r", Long.MAX_VALUE, 0),
                 new Heartbeat("r", 0, 0, Long.MAX_VALUE),
                 new Heartbeat("r", 127, 128, 16_383),
-                new Echo(Long.MAX_VALUE),
+                new Echo(Echo.MAX_TAG),
                 new Ack(Long.MAX_VALUE),
                 new RoleEvent("r", "e", List.of()),
                 new RoleEvent("r", "e", sixtyFour),

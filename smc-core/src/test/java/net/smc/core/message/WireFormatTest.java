@@ -22,10 +22,28 @@ class WireFormatTest {
     }
 
     @Test
-    void echo_isHeaderThenTheEchoedId() {
-        byte[] d = codec.datagram(new Envelope("uav1", 8, new Echo(7)));
-        assertEquals("53 4d 01 14 04 75 61 76 31 00 00 00 00 00 00 00 08 00 08 "
-                + "00 00 00 00 00 00 00 07", hex(d));
+    void echo_isHeaderThenTheEchoedHeartbeatsTag() {
+        byte[] d = codec.datagram(new Envelope("uav1", 8, new Echo(Echo.tagOf(7))));
+        assertEquals("53 4d 01 14 04 75 61 76 31 00 00 00 00 00 00 00 08 00 04 "
+                + "00 00 00 08", hex(d));  // the tag of id 7: 7 mod (2^32 - 1) + 1
+        byte[] top = codec.datagram(new Envelope("uav1", 9, new Echo(Echo.MAX_TAG)));
+        assertEquals("ff ff ff ff", hex(top).substring(hex(top).length() - 11));  // unsigned
+    }
+
+    @Test
+    void echoTags_areNeverZero_andDistinctForIdsCloserThanTheirModulus() {
+        assertEquals(1, Echo.tagOf(Echo.MAX_TAG));
+        assertEquals(Echo.MAX_TAG, Echo.tagOf(Echo.MAX_TAG - 1));
+        long id = (1_700_000_000_000L << 16) + 12_345;   // ids start at the clock shifted left 16 bits
+        java.util.Set<Long> tags = new java.util.HashSet<>();
+        for (long i = 0; i < 10_000; i++) {
+            long tag = Echo.tagOf(id + i * 65_537);
+            org.junit.jupiter.api.Assertions.assertTrue(tag >= 1 && tag <= Echo.MAX_TAG);
+            tags.add(tag);
+        }
+        assertEquals(10_000, tags.size());
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> new Echo(Echo.MAX_TAG + 1));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> new Echo(-1));
     }
 
     @Test
