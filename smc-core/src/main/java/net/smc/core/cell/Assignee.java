@@ -255,6 +255,8 @@ final class Assignee {
         st.seats.clear();
         st.seats.addAll(after);
         st.parent = new Parent(in.from(), in.address());
+        // What the assignment says replaces what the parent's statuses said: hold none of its versions.
+        st.statusVersionFrom = null;
         st.ancestors = TeamContext.lineage(in.from(), a.ancestors());
         st.epoch = a.epoch();
         st.lastStatusMillis = ctx.clock().nowMillis();

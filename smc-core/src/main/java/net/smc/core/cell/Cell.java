@@ -1,14 +1,11 @@
 package net.smc.core.cell;
 
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
-import java.util.Set;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.SplittableRandom;
-import java.util.TreeSet;
 import java.util.function.Consumer;
 
 import net.smc.core.capability.CapabilityDescription;
@@ -18,18 +15,9 @@ import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.message.CellRequest;
 import net.smc.core.message.Identity;
 import net.smc.core.mission.Mission;
-import net.smc.core.mission.MissionRole;
-import net.smc.core.mission.RoleInterface;
 import net.smc.core.role.RoleLoadException;
 import net.smc.core.role.Caller;
 import net.smc.core.role.ExternalGateway;
-import net.smc.core.role.ExternalInterface;
-import net.smc.core.role.LocalInterface;
-import net.smc.core.role.PolicySource;
-import net.smc.core.role.RequiredOperation;
-import net.smc.core.role.TaskOperation;
-import net.smc.core.task.StateHandover;
-import net.smc.core.task.Task;
 import net.smc.policy.api.AuthMode;
 import net.smc.core.role.Role;
 import net.smc.core.role.RoleManager;
@@ -72,7 +60,6 @@ import net.smc.policy.RunResult;
 public final class Cell {
     /** Where the team object is: {@code root/team}. */
     public static final String TEAM = "team";
-    private static final String TASK_STATE = "#task";
     private final String vehicle;
     private final Mission mission;
     private final Slots slots;
@@ -85,6 +72,7 @@ public final class Cell {
     private final boolean commanding;
     private final TaskProvider tasks;
     private final ExternalGateway gateway;
+    private final VehicleRoles vehicleRoles;
     private boolean started;
 
     private Cell(Builder b) {
@@ -132,7 +120,7 @@ public final class Cell {
 
             @Override
             public void loadRole(String role, PolicyStore from) throws RoleLoadException {
-                roles.load(roleOf(role, from));
+                roles.load(vehicleRoles.roleOf(role, from));
             }
 
             @Override
@@ -180,18 +168,20 @@ public final class Cell {
 
             @Override
             public List<Object> taskStates() {
-                return Cell.this.taskStates();
+                return vehicleRoles.taskStates();
             }
 
             @Override
             public void importTaskStates(String role, List<Object> handedOver) {
-                Cell.this.importTaskStates(role, handedOver);
+                vehicleRoles.importTaskStates(role, handedOver);
             }
         };
         this.protocol = new TeamProtocol(TeamContext.builder().self(vehicle).slots(slots).timing(timing).comm(comm)
                 .clock(b.clock).scheduler(b.scheduler).description(b.description).store(store)
                 .repository(b.repository).host(host).trace(b.trace).build(), random.nextLong(timing.comTimeoutMillis()));
         this.roles = RoleManager.builder(engine).reassignment(protocol::reassign).build();
+        this.vehicleRoles = new VehicleRoles(vehicle, slots, tasks, protocol::seats, roles::isLoaded, this::publish,
+                diagnostics::add);
         this.gateway = new ExternalGateway(roles);
         new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol).install(engine);
         protocol.register(router);
@@ -208,7 +198,10 @@ public final class Cell {
             }
         });
         if (commanding) {
-            loadRepository(b.repository);
+            if (b.repository == null) {
+                throw new IllegalStateException("the acting commander '" + vehicle + "' needs the policy repository");
+            }
+            store.loadMission(b.repository, mission);
         }
     }
 
@@ -273,60 +266,7 @@ public final class Cell {
 
     /** The first role this cell holds whose mission interface publishes {@code event}. */
     Optional<String> publishingRole(String event) {
-        for (Seat s : protocol.seats()) {
-            if (slots.role(s.role()).interfaces().publishes().contains(event) && roles.isLoaded(s.role())) {
-                return Optional.of(s.role());
-            }
-        }
-        return Optional.empty();
-    }
-
-    private void taskRaised(Task task, String event, List<Object> values) {
-        publishingRole(event).ifPresent(role -> publish(role, event, values));
-    }
-
-    /** Per running task that hands state over: {@code ["#task", name, key, value, ...]}. */
-    private List<Object> taskStates() {
-        List<Object> out = new ArrayList<>();
-        if (tasks == TaskProvider.NONE) {
-            return out;
-        }
-        for (String name : new TreeSet<>(tasks.names())) {
-            Optional<Task> t = tasks.task(name);
-            if (t.isPresent() && t.get().isRunning() && t.get() instanceof StateHandover h) {
-                List<Object> entry = new ArrayList<>();
-                entry.add(TASK_STATE);
-                entry.add(name);
-                h.exportState().forEach((k, v) -> {
-                    entry.add(k);
-                    entry.add(WireValues.of(v));
-                });
-                out.add(entry);
-            }
-        }
-        return out;
-    }
-
-    private void importTaskStates(String role, List<Object> handedOver) {
-        Set<String> ofRole = slots.role(role).requirement().tasks();
-        for (Object o : handedOver) {
-            if (o instanceof List<?> l && l.size() >= 2 && TASK_STATE.equals(l.get(0)) && l.get(1) instanceof String name
-                    && ofRole.contains(name)) {
-                Optional<Task> t = tasks.task(name);
-                if (t.isPresent() && t.get() instanceof StateHandover h) {
-                    Map<String, Object> state = new LinkedHashMap<>();
-                    for (int i = 2; i + 1 < l.size(); i += 2) {
-                        state.put(String.valueOf(l.get(i)), WireValues.toJava(l.get(i + 1)));
-                    }
-                    try {
-                        h.importState(state);
-                    } catch (RuntimeException bad) {
-                        diagnostics.add(new Diagnostic(new net.smc.policy.lang.SourcePos("handover", 1, 1), "task " + name + " of role '" + role
-                                + "' refused the handed-over state: " + bad.getMessage()));
-                    }
-                }
-            }
-        }
+        return vehicleRoles.publishingRole(event);
     }
 
     /** The state handed over with the last role this vehicle took (empty if none). */
@@ -381,6 +321,11 @@ public final class Cell {
         return protocol.children();
     }
 
+    /** Whether {@code vehicle} is among {@link #children()}, without building them. */
+    public boolean hasChild(String vehicle) {
+        return protocol.hasChild(vehicle);
+    }
+
     /** For the acting commander, the mission's state. */
     public Optional<MissionState> missionState() {
         return protocol.missionState();
@@ -420,54 +365,6 @@ public final class Cell {
 
     public CommunicationManager communication() {
         return comm;
-    }
-
-    /** The role a vehicle loads for {@code name}: the mission's policies as this cell holds them, and its tasks. */
-    private Role roleOf(String name, PolicyStore from) {
-        MissionRole r = slots.role(name);
-        Role.Builder b = Role.builder(name);
-        for (String uri : r.policies()) {
-            b.mission(PolicySource.text(uri, text(from, uri, name)));
-        }
-        for (String uri : r.authorisations()) {
-            b.authorisation(PolicySource.text(uri, text(from, uri, name)));
-        }
-        slots.managedRoles(name).forEach(b::manages);
-        boolean withTasks = tasks != TaskProvider.NONE;
-        if (withTasks) {
-            for (String task : new TreeSet<>(r.requirement().tasks())) {
-                b.task(task, () -> {
-                    Task t = tasks.task(task).orElseThrow(() -> new IllegalStateException("vehicle '" + vehicle
-                            + "' has no task '" + task + "' (its tasks: " + new TreeSet<>(tasks.names()) + ")"));
-                    t.listen(this::taskRaised);
-                    return t;
-                });
-            }
-        }
-        // The mission's <interface>: operations only where the role runs its tasks here.
-        RoleInterface in = r.interfaces();
-        List<TaskOperation> offered = withTasks
-                ? in.offers().stream().map(o -> new TaskOperation(o.task(), o.selector())).toList() : List.of();
-        b.local(new LocalInterface(offered, in.publishes()));
-        b.external(new ExternalInterface(offered, in.publishes(),
-                in.uses().stream().map(u -> new RequiredOperation(u.role(), u.selector())).toList(), in.subscribes()));
-        return b.build();
-    }
-
-    private static String text(PolicyStore from, String uri, String role) {
-        return from.get(uri, PolicyStore.ANY_VERSION).orElseThrow(() -> new IllegalStateException("policy " + uri
-                + " of role '" + role + "' has not arrived")).text();
-    }
-
-    /** The repository holder reads every policy of the mission. */
-    private void loadRepository(PolicyRepository repository) {
-        if (repository == null) {
-            throw new IllegalStateException("the acting commander '" + vehicle + "' needs the policy repository");
-        }
-        for (MissionRole r : mission.roles()) {
-            r.policies().forEach(uri -> store.load(repository, uri));
-            r.authorisations().forEach(uri -> store.load(repository, uri));
-        }
     }
 
     /** The discovery check: a credential issued to that vehicle for this mission (proven by the transport). */

@@ -6,6 +6,7 @@ import java.util.Map;
 
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Parent;
+import net.smc.core.message.Echo;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Heartbeat;
 import net.smc.core.message.Leave;
@@ -13,21 +14,30 @@ import net.smc.core.message.SubtreeReport;
 import net.smc.core.message.Status;
 
 /**
- * Membership as a child: heartbeats and subtree reports to the parent, the lease its statuses renew
+ * Membership as a child: heartbeats and subtree reports to the parent, the lease its statuses and echoes renew
  * (SUSPENDED when it lapses, ORPHANED when the parent is lost), adoption by a backup that took over,
- * and Leaves from parent or children. Owns STATUS and LEAVE.
+ * and Leaves from parent or children. Owns STATUS, ECHO and LEAVE.
  */
 final class Membership {
     private final TeamContext ctx;
     private final TeamState st;
-    /** Heartbeats between unchanged subtree reports. */
-    private static final int REPORT_TICKS = 4;
+    /**
+     * Heartbeats between unchanged subtree reports: a report that changed goes at once, so the
+     * unchanged one only repairs what was lost (with the repeats below) and dates the parent's copy.
+     */
+    static final int REPORT_TICKS = 16;
+    /**
+     * Heartbeats after a changed report that send it again (unless it changed once more): a change
+     * reaches the parent unless this many plus one datagrams in a row are lost, though the
+     * unchanged report is sent only every {@link #REPORT_TICKS} heartbeats.
+     */
+    static final int REPORT_REPEATS = 2;
 
     private final Seating seating;
     private final TeamCounts counts;
     private final BackupCommander backup;
     private final Reports reports;
-    /** Send times of recent heartbeats, by envelope id, to date the parent's echoes. */
+    /** Send times of recent heartbeats, by their {@linkplain Echo#tagOf tag}, to date the parent's echoes. */
     private final Map<Long, Long> heartbeatSentAt = new LinkedHashMap<>(32, 0.75f, false) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
@@ -36,6 +46,8 @@ final class Membership {
     };
     /** Heartbeats until an unchanged subtree report is sent again. */
     private int reportCountdown;
+    /** Copies of the latest changed report still to send, one a heartbeat. */
+    private int reportRepeats;
     private List<Object> lastReport = List.of();
 
     Membership(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Reports reports) {
@@ -74,10 +86,21 @@ final class Membership {
                     + " ms ago; last status " + silent + " ms ago");
         }
         // The heartbeat's state field carries the slot of the primary seat, so the parent knows the exact seat.
-        long id = ctx.comm().send(st.parent.address(), new Heartbeat(st.seats.get(0).role(), st.epoch, st.seats.get(0).slot()));
-        heartbeatSentAt.put(id, now);
+        long held = st.parent.vehicle().equals(st.statusVersionFrom) ? st.statusVersionHeld : 0;
+        long id = ctx.comm().send(st.parent.address(), new Heartbeat(st.seats.get(0).role(), st.epoch, st.seats.get(0).slot(), held));
+        heartbeatSentAt.put(Echo.tagOf(id), now);
         List<Object> report = reports.reportValues();
-        if (!report.equals(lastReport) || --reportCountdown <= 0) {
+        boolean send;
+        if (!report.equals(lastReport)) {
+            reportRepeats = REPORT_REPEATS;
+            send = true;
+        } else if (reportRepeats > 0) {
+            reportRepeats--;
+            send = true;
+        } else {
+            send = --reportCountdown <= 0;
+        }
+        if (send) {
             reportCountdown = REPORT_TICKS;
             lastReport = report;
             ctx.send(st.parent.address(), new SubtreeReport(st.seats.get(0).role(), report));
@@ -90,12 +113,9 @@ final class Membership {
         }
         String from = env.sender();
         if (st.parent != null && st.parent.vehicle().equals(from)) {
-            st.lastStatusMillis = ctx.clock().nowMillis();
-            Long sentAt = heartbeatSentAt.get(s.echo());
-            if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
-                st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
-                st.lapseNoted = false;
-            }
+            renew(s.echo() == 0 ? 0 : Echo.tagOf(s.echo()));
+            st.statusVersionHeld = s.version();
+            st.statusVersionFrom = from;
             st.epoch = s.epoch();
             st.commander = s.commander();
             st.teamSize = s.teamSize();
@@ -110,6 +130,8 @@ final class Membership {
             st.commander = from;
             st.epoch = s.epoch();
             st.lastStatusMillis = ctx.clock().nowMillis();
+            st.statusVersionHeld = s.version();
+            st.statusVersionFrom = from;
             // Seats granted by the old commander count again only once the new one has echoed a heartbeat.
             st.leaseUntilMillis = ctx.clock().nowMillis() - 1;
             st.backupRank = -1;
@@ -125,6 +147,23 @@ final class Membership {
                     seating.dropOwnSeat(seat, "adopted by new commander " + from + ", which did not give it");
                 }
             }
+        }
+    }
+
+    /** The parent's answer while this cell holds its current status: the parent is alive, and the lease renewed. */
+    void onEcho(Envelope env, Echo e) {
+        if (st.parent != null && st.parent.vehicle().equals(env.sender())) {
+            renew(e.echo());
+        }
+    }
+
+    /** The parent was heard; its echo of a heartbeat (by its tag; 0: none) renews the lease from that heartbeat's sending. */
+    private void renew(long tag) {
+        st.lastStatusMillis = ctx.clock().nowMillis();
+        Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
+        if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
+            st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
+            st.lapseNoted = false;
         }
     }
 

@@ -8,6 +8,8 @@ import java.util.Optional;
 import java.util.zip.CRC32;
 
 import net.smc.core.message.PolicyRef;
+import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionRole;
 import net.smc.policy.api.PolicyRepository;
 
 /**
@@ -46,6 +48,19 @@ public final class PolicyStore {
         String text = repository.read(uri).orElseThrow(() -> new IllegalArgumentException("policy '" + uri
                 + "' is not in the repository at " + repository.root()));
         return put(uri, text);
+    }
+
+    /**
+     * Reads every policy and authorisation file of {@code mission}'s roles from {@code repository}:
+     * what the repository holder (the acting commander) serves the team from.
+     *
+     * @throws IllegalArgumentException naming the URI when the repository lacks one
+     */
+    public void loadMission(PolicyRepository repository, Mission mission) {
+        for (MissionRole r : mission.roles()) {
+            r.policies().forEach(uri -> load(repository, uri));
+            r.authorisations().forEach(uri -> load(repository, uri));
+        }
     }
 
     /** Holds {@code text} as the current version of {@code uri}. */

@@ -183,6 +183,12 @@ final class Reports {
         return out;
     }
 
+    /** Whether {@code vehicle} is a child holding a seat from this cell: a key of {@link #children()}. */
+    boolean hasChild(String vehicle) {
+        Child c = st.children.get(vehicle);
+        return c != null && !c.seats.isEmpty();
+    }
+
     Optional<String> commander() {
         return Optional.ofNullable(st.commander);
     }

@@ -10,7 +10,9 @@ import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Owned;
 import net.smc.core.cell.TeamState.PendingCapability;
+import net.smc.core.cell.TeamState.StatusContent;
 import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.Echo;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Heartbeat;
 import net.smc.core.message.Leave;
@@ -22,7 +24,8 @@ import net.smc.core.transport.Address;
 import net.smc.core.transport.Cancellable;
 
 /**
- * The manager's tick and its children's heartbeats: answers each heartbeat with a status (which
+ * The manager's tick and its children's heartbeats: answers each heartbeat with a status, or a
+ * bare echo while the child holds the current status (either
  * renews the child's lease; a child whose heartbeat went unanswered for a period and a half gets
  * one from the tick), detects silent children and raises {@code UAVFailure} (Table II),
  * carries out re-assignment, and moves the team towards the reasonably-optimal configuration
@@ -88,17 +91,43 @@ final class Supervisor {
         }
         child.lastHeard = ctx.clock().nowMillis();
         child.address = back.get();
-        child.lastHeartbeat = Math.max(child.lastHeartbeat, env.id());
+        if (env.id() >= child.lastHeartbeat) {
+            child.lastHeartbeat = env.id();
+            child.statusVersionHeld = h.statusVersion();
+        }
         sendStatus(child);
     }
 
-    /** Tells a child the team's state, echoing its latest heartbeat heard (which renews its lease). */
+    /**
+     * Tells a child the team's state, echoing its latest heartbeat heard (which renews its lease):
+     * a bare {@link Echo} when that heartbeat said the child holds the current version of this
+     * cell's status, else the whole status with its version (so a status that was lost is sent
+     * again until a heartbeat names it).
+     */
     private void sendStatus(Child child) {
         if (child.address != null && st.identity != null) {
             child.statusSentMillis = ctx.clock().nowMillis();
-            ctx.send(child.address, new Status(ctx.missionId(), st.identity, st.commander == null ? ctx.self() : st.commander, st.epoch,
-                    counts.teamSize(), child.consistent ? child.lastHeartbeat : 0, st.ancestors));
+            long echo = child.consistent ? child.lastHeartbeat : 0;
+            long version = statusVersion();
+            if (child.statusVersionHeld == version) {
+                ctx.send(child.address, new Echo(echo == 0 ? 0 : Echo.tagOf(echo)));
+            } else {
+                StatusContent c = st.statusContent;
+                ctx.send(child.address, new Status(ctx.missionId(), c.identity(), c.commander(), c.epoch(), c.teamSize(), echo,
+                        c.ancestors(), version));
+            }
         }
+    }
+
+    /** The version of this cell's status as it is now: grows whenever its content changes. */
+    private long statusVersion() {
+        StatusContent now = new StatusContent(st.identity, st.commander == null ? ctx.self() : st.commander, st.epoch,
+                counts.teamSize(), st.ancestors);
+        if (!now.equals(st.statusContent)) {
+            st.statusContent = now;
+            st.statusVersion++;
+        }
+        return st.statusVersion;
     }
 
     void asManager(long now) {

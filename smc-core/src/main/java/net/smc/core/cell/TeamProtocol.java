@@ -11,6 +11,7 @@ import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
 import net.smc.core.message.Discovery;
 import net.smc.core.message.DiscoveryReply;
+import net.smc.core.message.Echo;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Heartbeat;
 import net.smc.core.message.Identity;
@@ -188,6 +189,7 @@ final class TeamProtocol implements DiscoveryActions {
         });
         route(router, MessageType.HEARTBEAT, Heartbeat.class, supervisor::onHeartbeat);
         route(router, MessageType.STATUS, Status.class, membership::onStatus);
+        route(router, MessageType.ECHO, Echo.class, membership::onEcho);
         route(router, MessageType.SUBTREE_REPORT, SubtreeReport.class, reports::onReport);
         route(router, MessageType.ROLE_EVENT, RoleEvent.class, collaboration::onRoleEvent);
         route(router, MessageType.LEAVE, Leave.class, membership::onLeave);
@@ -372,6 +374,10 @@ final class TeamProtocol implements DiscoveryActions {
 
     Map<String, List<Seat>> children() {
         return reports.children();
+    }
+
+    boolean hasChild(String vehicle) {
+        return reports.hasChild(vehicle);
     }
 
     Optional<String> commander() {

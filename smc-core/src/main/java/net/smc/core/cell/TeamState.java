@@ -53,8 +53,17 @@ final class TeamState {
     List<Object> reportedState = List.of();
     int teamSize;
     long ticks;
+    /**
+     * The version of the parent's status this cell holds, and the parent it came from (a version
+     * means nothing from another parent): named in each heartbeat (Membership).
+     */
+    long statusVersionHeld;
+    String statusVersionFrom;
 
     // As a manager (written by Recruiter, Supervisor, Reports, Seating).
+    /** What this cell last told its children in a status (all but the echo), and its version (Supervisor). */
+    StatusContent statusContent;
+    long statusVersion;
     final Map<Seat, Owned> owned = new TreeMap<>();
     final Map<String, Child> children = new TreeMap<>();
     final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
@@ -84,6 +93,10 @@ final class TeamState {
     int backupRank = -1;
 
     record Parent(String vehicle, Address address) {
+    }
+
+    /** A status's content but its echo: when it differs from the last, the status's version grows. */
+    record StatusContent(Identity identity, String commander, long epoch, int teamSize, List<String> ancestors) {
     }
 
     record Incoming(String from, Address address, long envelopeId, RoleAssignment assignment, long sinceMillis) {
@@ -138,6 +151,8 @@ final class TeamState {
         int hosted;
         /** Envelope id of the latest heartbeat heard from it, echoed in every status. */
         long lastHeartbeat;
+        /** The version of this cell's status the child's latest heartbeat says it holds (0: none). */
+        long statusVersionHeld;
         /** When this cell last sent it a status (far in the past: never). */
         long statusSentMillis = Long.MIN_VALUE / 2;
         /**

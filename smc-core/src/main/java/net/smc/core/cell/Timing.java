@@ -10,11 +10,12 @@ import net.smc.core.mission.Parameter;
  *
  * <ul>
  *   <li>Every cell acts once per {@code comTimeout} (a "tick"): children send heartbeats, parents
- *       send each child a status (also in answer to each heartbeat), managers check their children
- *       and discover.</li>
+ *       answer each (a status, or a bare echo while the child holds the current status; at the tick
+ *       when a child's heartbeat went unanswered for a period and a half), managers check their
+ *       children and discover.</li>
  *   <li>A parent declares a child failed after {@code failureTimeout} without a heartbeat.</li>
  *   <li>A child's lease lasts {@code failureTimeout - comTimeout / 2} from the <em>sending</em> of
- *       its latest heartbeat that a status echoed: the parent heard that heartbeat after it was
+ *       its latest heartbeat that a status or an echo echoed: the parent heard that heartbeat after it was
  *       sent, so the child stops counting as a holder before the parent can give its seat to another
  *       vehicle, whatever the latency (the half heartbeat covers clocks that run at slightly
  *       different rates).</li>

@@ -32,10 +32,15 @@ final class ExchangeBodies {
     static final BodyCodec<Heartbeat> HEARTBEAT = new BodyCodec<>(MessageType.HEARTBEAT, Heartbeat.class,
             (m, w) -> {
                 w.string8(m.role());
-                w.i64(m.epoch());
-                w.i32(m.state());
+                w.varint(m.epoch());
+                w.varint(m.state());
+                w.varint(m.statusVersion());
             },
-            r -> new Heartbeat(r.name("role"), r.i64("epoch"), r.i32("state")));
+            r -> new Heartbeat(r.name("role"), r.varint("epoch"), intVarint(r, "state"), r.varint("statusVersion")));
+
+    static final BodyCodec<Echo> ECHO = new BodyCodec<>(MessageType.ECHO, Echo.class,
+            (m, w) -> w.i32((int) m.echo()),
+            r -> new Echo(Integer.toUnsignedLong(r.i32("echo"))));
 
     static final BodyCodec<Ack> ACK = new BodyCodec<>(MessageType.ACK, Ack.class,
             (m, w) -> w.i64(m.acked()),
@@ -134,6 +139,15 @@ final class ExchangeBodies {
                         r.string8("origin", WireFormat.MAX_SENDER), r.string8("reply", WireFormat.MAX_TEXT));
             });
 
-    static final List<BodyCodec<?>> ALL = List.of(POLICY_REQUEST, POLICY_REPLY, HEARTBEAT, ACK,
+    /** A varint that must fit an int (a heartbeat's state). */
+    private static int intVarint(DatagramReader r, String field) throws DecodeException {
+        long v = r.varint(field);
+        if (v > Integer.MAX_VALUE) {
+            throw new DecodeException(RejectReason.MALFORMED, field + " is " + v + "; at most " + Integer.MAX_VALUE);
+        }
+        return (int) v;
+    }
+
+    static final List<BodyCodec<?>> ALL = List.of(POLICY_REQUEST, POLICY_REPLY, HEARTBEAT, ECHO, ACK,
             ROLE_EVENT, INVOCATION, INVOCATION_RESULT, ACKS, SUBTREE_REPORT, CELL_REQUEST);
 }

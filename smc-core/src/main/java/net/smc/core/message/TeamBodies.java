@@ -88,12 +88,13 @@ final class TeamBodies {
                 w.i32(m.teamSize());
                 w.i64(m.echo());
                 writeNames(m.ancestors(), w);
+                w.varint(m.version());
             },
             r -> {
                 String mission = r.name("mission");
                 Identity identity = new Identity(mission, r.i32("identity.level"), r.i32("identity.sequence"));
                 return new Status(mission, identity, r.string8("commander", WireFormat.MAX_SENDER), r.i64("epoch"),
-                        r.i32("teamSize"), r.i64("echo"), readNames(r, "ancestors"));
+                        r.i32("teamSize"), r.i64("echo"), readNames(r, "ancestors"), r.varint("version"));
             });
 
     static final BodyCodec<Leave> LEAVE = new BodyCodec<>(MessageType.LEAVE, Leave.class,

@@ -95,6 +95,33 @@ public class ByteReader<E extends Exception> {
         return v;
     }
 
+    /**
+     * A number written by {@code ByteWriter.varint}: 7-bit groups, least significant first, at most
+     * 9 bytes and at most {@link Long#MAX_VALUE}, in its shortest form (a last byte of 0 after
+     * another byte is refused, so that each number has exactly one encoding).
+     */
+    public final long varint(String field) throws E {
+        int at = pos;
+        long v = 0;
+        for (int shift = 0; ; shift += 7) {
+            if (shift > 56) {
+                throw errors.error(WireProblem.MALFORMED, at - start, field, "is a varint longer than 9 bytes");
+            }
+            require(1, field);
+            int b = buf[pos++] & 0xFF;
+            if (shift == 56 && b > 0x7F) {
+                throw errors.error(WireProblem.MALFORMED, at - start, field, "is a varint above " + Long.MAX_VALUE);
+            }
+            v |= (long) (b & 0x7F) << shift;
+            if (b < 0x80) {
+                if (b == 0 && shift > 0) {
+                    throw errors.error(WireProblem.MALFORMED, at - start, field, "is a varint not in its shortest form");
+                }
+                return v;
+            }
+        }
+    }
+
     /** A one-byte length or count in front of {@code field}; a shortage is reported as {@link WireErrors#truncatedLength}. */
     public final int length8(String field) throws E {
         requireLength(1, field);

@@ -85,6 +85,25 @@ public final class ByteWriter {
         pos += 8;
     }
 
+    /**
+     * A non-negative number in 7-bit groups, least significant first, the high bit of each byte
+     * set when another follows (unsigned LEB128), in its shortest form: 1 byte up to 127, 2 up to
+     * 16,383, at most 9 for a long. For fields that are usually small.
+     *
+     * @throws IllegalArgumentException if {@code v} is negative
+     */
+    public void varint(long v) {
+        if (v < 0) {
+            throw new IllegalArgumentException("a varint is 0 or more; got " + v);
+        }
+        ensure(9);
+        while (v >= 0x80) {
+            buf[pos++] = (byte) (v | 0x80);
+            v >>>= 7;
+        }
+        buf[pos++] = (byte) v;
+    }
+
     public void bool(boolean v) {
         u8(v ? 1 : 0);
     }

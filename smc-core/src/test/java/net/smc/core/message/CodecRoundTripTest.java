@@ -152,7 +152,7 @@ class CodecRoundTripTest {
         Envelope e = new Envelope("uav1", 8, new Heartbeat("relay", 1, 1));
         ByteBuffer buf = ByteBuffer.allocate(10);
         IllegalArgumentException ex = assertThrows(IllegalArgumentException.class, () -> codec.encoder.encode(e, buf));
-        assertEquals("HEARTBEAT from 'uav1' (id 8): the buffer has 10 bytes left; the datagram needs 37",
+        assertEquals("HEARTBEAT from 'uav1' (id 8): the buffer has 10 bytes left; the datagram needs 28",
                 ex.getMessage());
     }
 

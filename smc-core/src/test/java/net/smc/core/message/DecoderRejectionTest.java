@@ -21,7 +21,7 @@ class DecoderRejectionTest {
 
     /** A valid heartbeat payload after the given role bytes. */
     private static Raw heartbeat() {
-        return Raw.of(MessageType.HEARTBEAT).str8("relay").i64(1).i32(0);
+        return Raw.of(MessageType.HEARTBEAT).str8("relay").u8(1).u8(0).u8(0);  // varints: epoch 1, state 0, status 0
     }
 
     @Test
@@ -50,7 +50,7 @@ class DecoderRejectionTest {
     void foreignMagic_isBadMagic() {
         Raw raw = heartbeat();
         raw.magic = 0x4745;
-        reject(raw.datagram(), RejectReason.BAD_MAGIC, "datagram of 37 bytes: magic is 0x4745; a datagram starts with"
+        reject(raw.datagram(), RejectReason.BAD_MAGIC, "datagram of 28 bytes: magic is 0x4745; a datagram starts with"
                 + " 0x534D");
     }
 
@@ -58,16 +58,16 @@ class DecoderRejectionTest {
     void laterVersion_isUnknownVersion() {
         Raw raw = heartbeat();
         raw.version = 2;
-        reject(raw.datagram(), RejectReason.UNKNOWN_VERSION, "datagram of 37 bytes: version is 2; this build reads"
+        reject(raw.datagram(), RejectReason.UNKNOWN_VERSION, "datagram of 28 bytes: version is 2; this build reads"
                 + " version 1");
     }
 
     @Test
     void unassignedTypeCode_isUnknownType() {
-        for (int code : new int[] {0x00, 0x14, 0xFE}) {
+        for (int code : new int[] {0x00, 0x15, 0xFE}) {
             Raw raw = heartbeat();
             raw.type = code;
-            reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 37 bytes: type code 0x%02X is"
+            reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 28 bytes: type code 0x%02X is"
                     + " not assigned to a message type", code));
         }
     }
@@ -76,7 +76,7 @@ class DecoderRejectionTest {
     void senderOver64Bytes_isOversized() {
         Raw raw = heartbeat();
         raw.sender = new byte[65];
-        reject(raw.datagram(), RejectReason.OVERSIZED, "datagram of 98 bytes: sender is 65 bytes; at most 64 are"
+        reject(raw.datagram(), RejectReason.OVERSIZED, "datagram of 89 bytes: sender is 65 bytes; at most 64 are"
                 + " allowed");
     }
 
@@ -91,16 +91,16 @@ class DecoderRejectionTest {
     @Test
     void payloadLengthBeyondTheDatagram_isTruncated() {
         Raw raw = heartbeat();
-        raw.declaredLength = 19;
-        reject(raw.datagram(), RejectReason.TRUNCATED, "HEARTBEAT from 'uav1' (id 7): payload length is 19 but 18"
+        raw.declaredLength = 10;
+        reject(raw.datagram(), RejectReason.TRUNCATED, "HEARTBEAT from 'uav1' (id 7): payload length is 10 but 9"
                 + " bytes follow the header");
     }
 
     @Test
     void payloadLengthShortOfTheDatagram_isMalformed() {
         Raw raw = heartbeat();
-        raw.declaredLength = 17;
-        reject(raw.datagram(), RejectReason.MALFORMED, "HEARTBEAT from 'uav1' (id 7): payload length is 17 but 18"
+        raw.declaredLength = 8;
+        reject(raw.datagram(), RejectReason.MALFORMED, "HEARTBEAT from 'uav1' (id 7): payload length is 8 but 9"
                 + " bytes follow the header");
     }
 
@@ -112,8 +112,8 @@ class DecoderRejectionTest {
 
     @Test
     void fieldCutShort_isTruncated() {
-        reject(Raw.of(MessageType.HEARTBEAT).str8("relay").i64(1).u16(0).datagram(), RejectReason.TRUNCATED,
-                "HEARTBEAT from 'uav1' (id 7): state needs 4 bytes but 2 remain");
+        reject(Raw.of(MessageType.HEARTBEAT).str8("relay").u8(1).u8(0x80).datagram(), RejectReason.TRUNCATED,
+                "HEARTBEAT from 'uav1' (id 7): state needs 1 bytes but 0 remain");
     }
 
     @Test
@@ -124,7 +124,7 @@ class DecoderRejectionTest {
 
     @Test
     void overlongUtf8_isMalformed() {
-        reject(Raw.of(MessageType.HEARTBEAT).u8(2).raw((byte) 0xC0, (byte) 0x80).i64(1).i32(0).datagram(),
+        reject(Raw.of(MessageType.HEARTBEAT).u8(2).raw((byte) 0xC0, (byte) 0x80).u8(1).u8(0).u8(0).datagram(),
                 RejectReason.MALFORMED, "HEARTBEAT from 'uav1' (id 7): role is not well-formed UTF-8");
     }
 
@@ -135,9 +135,22 @@ class DecoderRejectionTest {
     }
 
     @Test
-    void negativeEpoch_isAnInvalidFieldNamedByTheRecord() {
-        reject(Raw.of(MessageType.HEARTBEAT).str8("relay").i64(-5).i32(0).datagram(), RejectReason.INVALID_FIELD,
-                "HEARTBEAT from 'uav1' (id 7): Heartbeat.epoch is -5; it must be 0 or more");
+    void echoOfEightBytes_isMalformed() {
+        reject(Raw.of(MessageType.ECHO).i64(5).datagram(), RejectReason.MALFORMED,
+                "ECHO from 'uav1' (id 7): 4 bytes follow the last field");
+    }
+
+    @Test
+    void varintInALongerFormThanNeeded_isMalformed() {
+        reject(Raw.of(MessageType.HEARTBEAT).str8("relay").u8(0x81).u8(0).u8(0).u8(0).datagram(), RejectReason.MALFORMED,
+                "HEARTBEAT from 'uav1' (id 7): epoch is a varint not in its shortest form");
+    }
+
+    @Test
+    void stateBeyondAnInt_isMalformed() {
+        reject(Raw.of(MessageType.HEARTBEAT).str8("relay").u8(1).raw((byte) 0x80, (byte) 0x80, (byte) 0x80, (byte) 0x80,
+                (byte) 0x08).u8(0).datagram(), RejectReason.MALFORMED,
+                "HEARTBEAT from 'uav1' (id 7): state is 2147483648; at most 2147483647");
     }
 
     @Test

@@ -15,10 +15,35 @@ class WireFormatTest {
     }
 
     @Test
-    void heartbeat_isHeaderThenRoleEpochState() {
-        byte[] d = codec.datagram(new Envelope("uav1", 7, new Heartbeat("relay", 42, 1)));
-        assertEquals("53 4d 01 09 04 75 61 76 31 00 00 00 00 00 00 00 07 00 12 "   // magic, version, type, sender, id, length
-                + "05 72 65 6c 61 79 00 00 00 00 00 00 00 2a 00 00 00 01", hex(d));  // role, epoch, state
+    void heartbeat_isHeaderThenRoleThenVarintEpochStateAndStatusVersion() {
+        byte[] d = codec.datagram(new Envelope("uav1", 7, new Heartbeat("relay", 42, 1, 300)));
+        assertEquals("53 4d 01 09 04 75 61 76 31 00 00 00 00 00 00 00 07 00 0a "   // magic, version, type, sender, id, length
+                + "05 72 65 6c 61 79 2a 01 ac 02", hex(d));  // role, epoch 42, state 1, status version 300 (0x2c | 0x80, 0x02)
+    }
+
+    @Test
+    void echo_isHeaderThenTheEchoedHeartbeatsTag() {
+        byte[] d = codec.datagram(new Envelope("uav1", 8, new Echo(Echo.tagOf(7))));
+        assertEquals("53 4d 01 14 04 75 61 76 31 00 00 00 00 00 00 00 08 00 04 "
+                + "00 00 00 08", hex(d));  // the tag of id 7: 7 mod (2^32 - 1) + 1
+        byte[] top = codec.datagram(new Envelope("uav1", 9, new Echo(Echo.MAX_TAG)));
+        assertEquals("ff ff ff ff", hex(top).substring(hex(top).length() - 11));  // unsigned
+    }
+
+    @Test
+    void echoTags_areNeverZero_andDistinctForIdsCloserThanTheirModulus() {
+        assertEquals(1, Echo.tagOf(Echo.MAX_TAG));
+        assertEquals(Echo.MAX_TAG, Echo.tagOf(Echo.MAX_TAG - 1));
+        long id = (1_700_000_000_000L << 16) + 12_345;   // ids start at the clock shifted left 16 bits
+        java.util.Set<Long> tags = new java.util.HashSet<>();
+        for (long i = 0; i < 10_000; i++) {
+            long tag = Echo.tagOf(id + i * 65_537);
+            org.junit.jupiter.api.Assertions.assertTrue(tag >= 1 && tag <= Echo.MAX_TAG);
+            tags.add(tag);
+        }
+        assertEquals(10_000, tags.size());
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> new Echo(Echo.MAX_TAG + 1));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> new Echo(-1));
     }
 
     @Test

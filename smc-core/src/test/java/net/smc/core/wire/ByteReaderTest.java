@@ -65,4 +65,31 @@ class ByteReaderTest {
         assertArrayEquals(new byte[] {9}, in.bytes(1, "y"));
         assertThrows(Exception.class, () -> in.take(1, "z"));
     }
+
+    @Test
+    void varint_roundTripsAtEveryLengthAndIsShortest() throws Exception {
+        long[] values = {0, 1, 127, 128, 16_383, 16_384, 1L << 35, Long.MAX_VALUE};
+        int[] lengths = {1, 1, 1, 2, 2, 3, 6, 9};
+        for (int i = 0; i < values.length; i++) {
+            ByteWriter w = ByteWriter.growing(16, 64, IllegalStateException::new);
+            w.varint(values[i]);
+            byte[] b = w.toByteArray();
+            assertEquals(lengths[i], b.length, "bytes of " + values[i]);
+            ByteReader<Exception> in = new ByteReader<>(PLAIN, b, 0, b.length);
+            assertEquals(values[i], in.varint("v"));
+            assertEquals(0, in.remaining());
+        }
+        assertThrows(IllegalArgumentException.class, () -> ByteWriter.growing(16, 64, IllegalStateException::new).varint(-1));
+    }
+
+    @Test
+    void varint_refusesALongerFormThanNeededAndOverflow() {
+        Exception padded = assertThrows(Exception.class, () -> reader(0, 0x81, 0x00).varint("version"));
+        assertEquals("MALFORMED version at 0: is a varint not in its shortest form", padded.getMessage());
+        Exception tooBig = assertThrows(Exception.class,
+                () -> reader(0, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x80, 0x01).varint("version"));
+        assertEquals("MALFORMED version at 0: is a varint above " + Long.MAX_VALUE, tooBig.getMessage());
+        Exception cut = assertThrows(Exception.class, () -> reader(1, 0, 0x80).varint("version"));
+        assertEquals("TRUNCATED version at 1: truncated: needs 1 bytes, 0 left", cut.getMessage());
+    }
 }

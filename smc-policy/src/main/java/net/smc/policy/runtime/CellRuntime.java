@@ -1,18 +1,12 @@
 package net.smc.policy.runtime;
 
 import net.smc.policy.api.PonderError;
-import net.smc.policy.api.Managed;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
-import java.util.Optional;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.LongSupplier;
@@ -25,7 +19,6 @@ import net.smc.policy.api.TeamLink;
 import net.smc.policy.api.TimerScheduler;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
-import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.SourcePos;
 import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
@@ -52,11 +45,10 @@ public final class CellRuntime {
     private final Config config;
     private final Interpreter interpreter = new Interpreter(this);
     private final Root root;
-    private final Map<String, Class<?>> registry = new LinkedHashMap<>();
-    private final Map<String, ManagedObject> factories = new HashMap<>();
-    private final Map<String, Path> files = new HashMap<>();
+    private final LoadableClasses loadable = new LoadableClasses();
+    private final UnitFiles files;
     private final Authoriser authoriser;
-    private final List<Consumer<Diagnostic>> listeners = new ArrayList<>();
+    private final ErrorReporter errors;
     private final List<Consumer<? super ManagedObject>> creationListeners = new ArrayList<>();
     private boolean booting = true;
     private TeamLink teamLink = TeamLink.NONE;
@@ -69,19 +61,16 @@ public final class CellRuntime {
 
     public CellRuntime(Config config) {
         this.config = config;
+        this.files = new UnitFiles(config.repository(), config.limits().maxUnitChars());
+        this.errors = new ErrorReporter(config.errors(), config.limits().maxErrorsPerRun());
         this.authoriser = config.auth() == AuthMode.OFF ? null : new Authoriser(this, config.auth());
-        registry.put("Domain", Domain.class);
-        registry.put("EventTemplate", EventTemplate.class);
-        registry.put("ObligationPolicy", ObligationPolicy.class);
-        registry.put("AuthorisationPolicy", AuthorisationPolicy.class);
-        registry.put("DateTime", DateTime.class);
         config.classes().forEach(this::register);
         this.root = new Root(this);
         Domain factory = new Domain(this);
-        factory.put("domain", factoryFor(Domain.class));
-        factory.put("event", factoryFor(EventTemplate.class));
-        factory.put("ecapolicy", factoryFor(ObligationPolicy.class));
-        factory.put("authpolicy", factoryFor(AuthorisationPolicy.class));
+        factory.put("domain", LoadableClasses.factoryFor(Domain.class));
+        factory.put("event", LoadableClasses.factoryFor(EventTemplate.class));
+        factory.put("ecapolicy", LoadableClasses.factoryFor(ObligationPolicy.class));
+        factory.put("authpolicy", LoadableClasses.factoryFor(AuthorisationPolicy.class));
         root.put("factory", factory);
         root.put("event", new Domain(this));
         root.put("policy", new Domain(this));
@@ -89,24 +78,12 @@ public final class CellRuntime {
 
     /** Makes a class loadable with {@code root load: "name"}; checks its annotations now. */
     public void register(String name, Class<?> type) {
-        ManagedClass.of(type);
-        ManagedClass.factoryOf(type);
-        registry.put(name, type);
-        factories.remove(name);
-    }
-
-    private static ManagedObject factoryFor(Class<?> type) {
-        return new ManagedObject(type, ManagedClass.factoryOf(type));
+        loadable.register(name, type);
     }
 
     /** The factory of a registered class ({@code root load:}). */
     ManagedObject load(String name) {
-        Class<?> type = registry.get(name);
-        if (type == null) {
-            throw new PonderError("Load Managed Object - Adaptor for '" + name + "' not found; loadable: "
-                    + String.join(", ", new java.util.TreeSet<>(registry.keySet())));
-        }
-        return factories.computeIfAbsent(name, n -> factoryFor(type));
+        return loadable.load(name);
     }
 
     /** A new domain that also answers the {@code @Op} operations of {@code extension}, which run on it. */
@@ -198,7 +175,7 @@ public final class CellRuntime {
 
     /** The names {@code root load:} knows, sorted. */
     public java.util.Set<String> loadableNames() {
-        return new java.util.TreeSet<>(registry.keySet());
+        return loadable.names();
     }
 
     /**
@@ -208,16 +185,7 @@ public final class CellRuntime {
      * @throws PonderError {@code cannot read 'x': file not found}
      */
     public String readText(String name, String fromSource) {
-        IncludeResolver.Included file;
-        try {
-            file = readFile(name, fromSource);
-        } catch (UncheckedIOException e) {
-            throw new PonderError("cannot read '" + name + "': " + e.getCause().getMessage());
-        }
-        if (file == null) {
-            throw new PonderError("cannot read '" + name + "': file not found");
-        }
-        return file.text();
+        return files.readText(name, fromSource);
     }
 
     /** Runs PonderTalk text as a nested unit of {@code ex} with fresh variables; errors propagate. */
@@ -287,10 +255,7 @@ public final class CellRuntime {
 
     /** Reports an error to the cell's error reporter (and to every listener added with {@link #listen}). */
     public void report(Diagnostic diagnostic) {
-        for (Consumer<Diagnostic> listener : List.copyOf(listeners)) {
-            listener.accept(diagnostic);
-        }
-        config.errors().accept(diagnostic);
+        errors.report(diagnostic);
     }
 
     /**
@@ -305,21 +270,16 @@ public final class CellRuntime {
 
     /** Ends a run: reports how many of its errors were suppressed, if any were. */
     public void finish(Execution ex) {
-        long suppressed = ex.errorsSuppressed();
-        if (suppressed > 0) {
-            report(new Diagnostic(null, suppressed + " more error" + (suppressed == 1 ? "" : "s")
-                    + " of this run suppressed (only the first " + config.limits().maxErrorsPerRun()
-                    + " are reported)"));
-        }
+        errors.finish(ex);
     }
 
     /** Also gives every diagnostic to {@code listener} until {@link #unlisten} removes it. */
     public void listen(Consumer<Diagnostic> listener) {
-        listeners.add(listener);
+        errors.listen(listener);
     }
 
     public void unlisten(Consumer<Diagnostic> listener) {
-        listeners.remove(listener);
+        errors.unlisten(listener);
     }
 
     /**
@@ -407,7 +367,7 @@ public final class CellRuntime {
      */
     public Unit parse(String source, String text, Path file) {
         if (file != null) {
-            files.put(source, file.toAbsolutePath().normalize());
+            files.remember(source, file);
         }
         if (text.length() > config.limits().maxUnitChars()) {
             SyntaxError tooLong = new SyntaxError(new SourcePos(source, 1, 1), "unit of " + text.length()
@@ -415,7 +375,7 @@ public final class CellRuntime {
             report(new Diagnostic(tooLong.pos(), tooLong.message()));
             return Unit.refused(source, tooLong);
         }
-        Unit unit = Parser.parse(source, text, this::resolveInclude);
+        Unit unit = Parser.parse(source, text, files::resolveInclude);
         for (SyntaxError e : unit.errors()) {
             report(new Diagnostic(e.pos(), e.message()));
         }
@@ -477,66 +437,9 @@ public final class CellRuntime {
         return last[0];
     }
 
-    /** Reads the file or policy URI {@code name}, relative to the folder of {@code fromSource}. */
+    /** Reads the file or policy URI {@code name}, relative to the folder of {@code fromSource}; null when there is none. */
     IncludeResolver.Included readFile(String name, String fromSource) {
-        Path file;
-        String shown;
-        if (PolicyRepository.isUri(name)) {
-            if (config.repository() == null) {
-                throw new PonderError("cannot read '" + name + "': no policy repository is configured");
-            }
-            try {
-                file = config.repository().pathOf(name);
-            } catch (IllegalArgumentException e) {
-                throw new PonderError(e.getMessage());
-            }
-            shown = name;
-        } else {
-            file = locate(name, fromSource).orElse(null);
-            shown = name;
-        }
-        if (file == null || !Files.isRegularFile(file)) {
-            return null;
-        }
-        try {
-            String text = SourceFiles.read(file, config.limits().maxUnitChars());
-            String source = PolicyRepository.isUri(shown) ? shown : file.getFileName().toString();
-            files.put(source, file.toAbsolutePath().normalize());
-            return new IncludeResolver.Included(source, text);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    private Optional<Path> locate(String name, String fromSource) {
-        try {
-            return locateFile(name, fromSource);
-        } catch (java.nio.file.InvalidPathException e) {
-            return Optional.empty();
-        }
-    }
-
-    private Optional<Path> locateFile(String name, String fromSource) {
-        Path from = files.get(fromSource);
-        if (from != null) {
-            Path sibling = from.resolveSibling(name).normalize();
-            if (Files.isRegularFile(sibling)) {
-                return Optional.of(sibling);
-            }
-        }
-        Path plain = Path.of(name);
-        if (from == null && Files.isRegularFile(plain)) {
-            return Optional.of(plain);
-        }
-        return config.repository() == null ? Optional.empty() : config.repository().find(name);
-    }
-
-    private IncludeResolver.Included resolveInclude(String name, String fromSource) {
-        try {
-            return readFile(name, fromSource);
-        } catch (PonderError e) {
-            throw new UncheckedIOException(new IOException(e.getMessage()));
-        }
+        return files.read(name, fromSource);
     }
 
     /** Converts a Java value to a PonderTalk value (ints to numbers, lists to arrays, maps to hashes ...). */

@@ -13,8 +13,10 @@ import java.util.Locale;
  * {@link ThreadMXBean}) moves much less. For each size given (default 10 100 1000) and with the
  * invariant checks on and off: a {@link ScaledTeam} is formed, settles for 5 simulated seconds, runs
  * {@code --warm S} simulated seconds untimed (default 5), then {@code --steady S} timed (default 10).
- * Printed: simulated seconds per wall second and per CPU second of the simulation's thread. Not a JMH
- * benchmark; for comparing two builds back to back.
+ * Printed: simulated seconds per wall second and per CPU second of the simulation's thread, and the
+ * steady-state traffic of the timed seconds: bytes and datagrams sent per vehicle per second (as
+ * {@link ScaledTeam} counts them; simulated, so the same on any machine). Not a JMH benchmark; for
+ * comparing two builds back to back.
  * <pre>./gradlew :smc-sim:jmh -PjmhMain=net.smc.sim.bench.IdleCpuReport -PjmhArgs='10 100 1000 --steady 10'</pre>
  */
 public final class IdleCpuReport {
@@ -40,7 +42,8 @@ public final class IdleCpuReport {
             throw new IllegalStateException("this JVM cannot measure a thread's CPU time");
         }
         threads.setThreadCpuTimeEnabled(true);
-        System.out.println("vehicles,invariants,simulated_s,wall_s,cpu_s,simulated_per_wall_s,simulated_per_cpu_s");
+        System.out.println("vehicles,invariants,simulated_s,wall_s,cpu_s,simulated_per_wall_s,simulated_per_cpu_s,"
+                + "bytes_per_vehicle_s,datagrams_per_vehicle_s");
         for (int n : sizes) {
             for (boolean invariants : new boolean[] {true, false}) {
                 ScaledTeam team = new ScaledTeam(n, 1, invariants);
@@ -49,13 +52,17 @@ public final class IdleCpuReport {
                             + ScaledTeam.FORMATION_LIMIT_MILLIS + " simulated ms");
                 }
                 team.sim.run(5_000 + warm * 1_000L);
+                long bytes0 = team.bytes();
+                long datagrams0 = team.datagrams();
                 long cpu0 = threads.getCurrentThreadCpuTime();
                 long wall0 = System.nanoTime();
                 team.sim.run(steady * 1_000L);
                 double cpu = (threads.getCurrentThreadCpuTime() - cpu0) / 1e9;
                 double wall = (System.nanoTime() - wall0) / 1e9;
-                System.out.printf(Locale.ROOT, "%d,%s,%d,%.3f,%.3f,%.2f,%.2f%n", n, invariants, steady, wall, cpu,
-                        steady / wall, steady / cpu);
+                double vehicleSeconds = (double) n * steady;
+                System.out.printf(Locale.ROOT, "%d,%s,%d,%.3f,%.3f,%.2f,%.2f,%.1f,%.2f%n", n, invariants, steady, wall, cpu,
+                        steady / wall, steady / cpu, (team.bytes() - bytes0) / vehicleSeconds,
+                        (team.datagrams() - datagrams0) / vehicleSeconds);
             }
         }
     }

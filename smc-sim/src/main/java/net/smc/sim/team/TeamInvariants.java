@@ -1,16 +1,13 @@
 package net.smc.sim.team;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.TreeMap;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
@@ -86,11 +83,12 @@ public final class TeamInvariants {
     void check() {
         checks++;
         List<Cell> cells = sim.cells();
-        Map<String, Cell> byId = new HashMap<>();
-        cells.forEach(c -> byId.put(c.vehicle(), c));
-        checkCycles(cells, byId);
-        Map<String, Set<String>> listed = new HashMap<>();   // each parent's children, for the whole check
-        Map<String, List<Cell>> teams = teams(cells, byId, listed);
+        ParentLinks<Cell> links = ParentLinks.of(cells);   // each cell's links read once, for the whole check
+        Set<String> cycle = links.cycle();
+        if (cycle != null) {
+            fail("the parent relation has a cycle through " + cycle);
+        }
+        Map<String, List<Cell>> teams = links.teams();
         Mission mission = sim.mission();
         for (Map.Entry<String, List<Cell>> team : teams.entrySet()) {
             Map<Seat, String> holders = new HashMap<>();
@@ -120,150 +118,37 @@ public final class TeamInvariants {
                 }
             }
         }
-        checkDangling(cells, byId, listed);
+        checkDangling(links);
         checkRogues(cells);
         checkCommanders();
-    }
-
-    /**
-     * Fails when the parent relation has a cycle. A walk up the parents from a cell that meets no
-     * cell twice takes at most one step per cell, so only a walk longer than that can have met one:
-     * then the walk is made again, remembering the cells met, to name them. A walk that reaches a
-     * cell an earlier walk passed through ends there: from that cell on, the way up is known to end.
-     */
-    private void checkCycles(List<Cell> cells, Map<String, Cell> byId) {
-        Set<Cell> ending = Collections.newSetFromMap(new IdentityHashMap<>());
-        List<Cell> walked = new ArrayList<>();
-        for (Cell c : cells) {
-            int steps = 0;
-            Cell at = c;
-            while (at != null && !ending.contains(at) && at.parent().isPresent()) {
-                if (++steps > cells.size()) {
-                    nameCycle(c, byId);
-                }
-                walked.add(at);
-                at = byId.get(at.parent().get());
-            }
-            ending.addAll(walked);
-            walked.clear();
-        }
-    }
-
-    private void nameCycle(Cell from, Map<String, Cell> byId) {
-        Set<String> seen = new HashSet<>();
-        Cell at = from;
-        while (at != null && at.parent().isPresent()) {
-            if (!seen.add(at.vehicle())) {
-                fail("the parent relation has a cycle through " + seen);
-            }
-            at = byId.get(at.parent().get());
-        }
     }
 
     private static int optimal(Mission mission, String role) {
         return role.equals(Mission.COMMANDER) ? 1 : mission.role(role).orElseThrow().optimal();
     }
 
-    /** Attached cells by the acting commander they hang from. */
-    static Map<String, List<Cell>> teams(List<Cell> cells, Map<String, Cell> byId) {
-        return teams(cells, byId, new HashMap<>());
-    }
-
-    /** As {@link #teams(List, Map)}, with {@code listed} the parents' child lists known so far in this check. */
-    private static Map<String, List<Cell>> teams(List<Cell> cells, Map<String, Cell> byId,
-                                                 Map<String, Set<String>> listed) {
-        Map<String, List<Cell>> teams = new TreeMap<>();
-        Map<Cell, Walk> walks = new IdentityHashMap<>();
-        for (Cell c : cells) {
-            Walk w = walk(c, byId, listed, walks);
-            if (w.steps() < ROOT_WALK_LIMIT && w.commander() != null) {
-                teams.computeIfAbsent(w.commander(), k -> new ArrayList<>()).add(c);
-            }
-        }
-        return teams;
-    }
-
-    /** Steps up from a cell after which its walk to a commander is given up: it is not attached. */
-    private static final int ROOT_WALK_LIMIT = 64;
-
-    /**
-     * Where a cell's walk up ends: at the acting commander {@code commander}, or nowhere (null), after
-     * {@code steps} steps up; {@value #ROOT_WALK_LIMIT} or more steps: not within the limit.
-     */
-    private record Walk(String commander, int steps) {
-    }
-
-    private static final Walk DETACHED = new Walk(null, 0);
-    private static final Walk UNENDING = new Walk(null, ROOT_WALK_LIMIT);
-
-    /**
-     * The walk up from {@code c} to the acting commander it is attached to: every cell on the way up
-     * holds a live lease (not suspended) from a parent that lists it as a child. A cell is attached
-     * when the walk ends at a commander within {@value #ROOT_WALK_LIMIT} steps. Every cell on the way
-     * is remembered in {@code walks}, so that a check walks each link once, not once per cell below it.
-     */
-    private static Walk walk(Cell c, Map<String, Cell> byId, Map<String, Set<String>> listed, Map<Cell, Walk> walks) {
-        List<Cell> below = new ArrayList<>();
-        Cell at = c;
-        Walk end;
-        while (true) {
-            Walk known = walks.get(at);
-            if (known != null) {
-                end = known;   // walked before; or met again on this walk, which then never ends
-                break;
-            }
-            if (at.isActingCommander()) {
-                end = new Walk(at.vehicle(), 0);
-                walks.put(at, end);
-                break;
-            }
-            Cell parent = at.isSuspended() || at.parent().isEmpty() ? null : byId.get(at.parent().get());
-            if (parent == null || !lists(parent, at.vehicle(), listed)) {
-                end = DETACHED;
-                walks.put(at, end);
-                break;
-            }
-            walks.put(at, UNENDING);   // on the way: until the end is known
-            below.add(at);
-            at = parent;
-        }
-        for (int i = below.size() - 1; i >= 0; i--) {
-            end = end.steps() + 1 >= ROOT_WALK_LIMIT ? UNENDING : new Walk(end.commander(), end.steps() + 1);
-            walks.put(below.get(i), end);
-        }
-        return end;
-    }
-
-    /**
-     * Whether {@code parent} lists {@code child} among its children; {@code listed} keeps each
-     * parent's list for the rest of one check ({@link Cell#children()} builds a new map every call,
-     * and a check asks about every parent once per child and level).
-     */
-    private static boolean lists(Cell parent, String child, Map<String, Set<String>> listed) {
-        return listed.computeIfAbsent(parent.vehicle(), v -> parent.children().keySet()).contains(child);
+    /** Attached cells by the acting commander they hang from (see {@link ParentLinks#teams()}). */
+    static Map<String, List<Cell>> teams(List<Cell> cells) {
+        return ParentLinks.of(cells).teams();
     }
 
     /**
      * A cell whose parent is gone or no longer lists it (a dropped Leave, a crash) keeps a lease it
      * should not: it must lose it within the lease plus two heartbeats.
      */
-    private void checkDangling(List<Cell> cells, Map<String, Cell> byId, Map<String, Set<String>> listed) {
+    private void checkDangling(ParentLinks<Cell> links) {
         long now = sim.nowMillis();
         long bound = net.smc.core.cell.Timing.of(sim.mission()).leaseMillis() + 2 * number("comTimeout");
         Set<String> dangling = new HashSet<>();
-        for (Cell c : cells) {
-            if (c.isActingCommander() || c.isSuspended() || c.parent().isEmpty()) {
+        for (int i = 0; i < links.size(); i++) {
+            if (links.acting(i) || links.suspended(i) || links.parent(i) == null || links.listedByParent(i)) {
                 continue;
             }
-            Cell parent = byId.get(c.parent().get());
-            if (parent != null && lists(parent, c.vehicle(), listed)) {
-                continue;
-            }
-            String key = c.vehicle() + "->" + c.parent().get();
+            String key = links.vehicle(i) + "->" + links.parent(i);
             dangling.add(key);
             long since = danglingSince.computeIfAbsent(key, k -> now);
             if (now - since > bound) {
-                fail(c.vehicle() + " has held a lease from " + c.parent().get() + " for " + (now - since)
+                fail(links.vehicle(i) + " has held a lease from " + links.parent(i) + " for " + (now - since)
                         + " ms although that parent is gone or does not list it; the bound is " + bound + " ms");
             }
         }
@@ -354,7 +239,7 @@ public final class TeamInvariants {
         List<Cell> cells = sim.cells();
         Map<String, Cell> byId = new HashMap<>();
         cells.forEach(c -> byId.put(c.vehicle(), c));
-        List<Cell> team = teams(cells, byId).getOrDefault(cdr.vehicle(), List.of());
+        List<Cell> team = teams(cells).getOrDefault(cdr.vehicle(), List.of());
         Map<String, Integer> have = new LinkedHashMap<>();
         sim.mission().roleNames().forEach(r -> have.put(r, 0));
         team.forEach(c -> c.seats().forEach(s -> have.merge(s.role(), 1, Integer::sum)));
@@ -408,9 +293,7 @@ public final class TeamInvariants {
         if (!plan(cdr.vehicle()).optimalReached()) {
             return true;
         }
-        Map<String, Cell> byId = new HashMap<>();
-        sim.cells().forEach(c -> byId.put(c.vehicle(), c));
-        return teams(sim.cells(), byId).getOrDefault(cdr.vehicle(), List.of()).stream()
+        return teams(sim.cells()).getOrDefault(cdr.vehicle(), List.of()).stream()
                 .allMatch(c -> c.seats().size() == 1);
     }
 

@@ -4,9 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 
 import net.smc.core.cell.CellEvent;
@@ -19,15 +17,20 @@ import net.smc.core.transport.sim.LinkProfile;
 import org.junit.jupiter.api.Test;
 
 /**
- * The steady state's statuses: a parent answers each heartbeat with a status, and that answer is
- * the only status in a period; a child whose heartbeats go unanswered (lost) still gets a status of
- * the parent's own within a period and a half.
+ * The steady state's traffic: a parent answers each heartbeat, and that answer is the only one in
+ * a period; while the child holds the parent's current status the answer is a bare ECHO, and a
+ * status that changed goes in full until a heartbeat of the child names its version (so a lost one
+ * is sent again); a child whose heartbeats go unanswered (lost) still hears its parent within a
+ * period and a half; a subtree report that did not change goes once every sixteen heartbeats.
  */
 class SteadyStateTrafficTest {
     private static final long PERIOD = 500;
 
-    /** STATUS datagrams sent, by "from>to" address pair. */
-    private final Map<String, Integer> statuses = new HashMap<>();
+    /** One datagram sent: when, from and to which address, its frame type. */
+    private record Sent(long atMillis, Address from, Address to, int type) {
+    }
+
+    private final List<Sent> sent = new ArrayList<>();
     private final List<CellEvent> events = new ArrayList<>();
 
     private TeamSimulation formedTeam(long seed) {
@@ -36,9 +39,7 @@ class SteadyStateTrafficTest {
         sim.network().setCpuModel(new CpuModel() {
             @Override
             public long sendMicros(Address at, Address to, byte[] data) {
-                if (typeOf(data) == MessageType.STATUS.code()) {
-                    statuses.merge(at + ">" + to, 1, Integer::sum);
-                }
+                sent.add(new Sent(sim.nowMillis(), at, to, typeOf(data)));
                 return 0;
             }
 
@@ -51,7 +52,7 @@ class SteadyStateTrafficTest {
         assertTrue(sim.runUntil(() -> sim.cell("cdr").missionState().equals(Optional.of(MissionState.OPTIMAL))
                 && sim.invariants().settled(), 20_000), "the team settles");
         sim.run(2 * PERIOD);
-        statuses.clear();
+        sent.clear();
         return sim;
     }
 
@@ -65,22 +66,82 @@ class SteadyStateTrafficTest {
         return -1;
     }
 
-    private int statusesTo(TeamSimulation sim, String parent, String child) {
-        return statuses.getOrDefault(sim.address(parent) + ">" + sim.address(child), 0);
+    /** The datagrams of {@code types} sent from {@code from} to {@code to} since {@code sinceMillis}, in order. */
+    private List<Sent> sent(TeamSimulation sim, String from, String to, long sinceMillis, MessageType... types) {
+        List<Sent> out = new ArrayList<>();
+        for (Sent s : sent) {
+            if (s.atMillis >= sinceMillis && sim.address(from).equals(s.from) && sim.address(to).equals(s.to)) {
+                for (MessageType t : types) {
+                    if (s.type == t.code()) {
+                        out.add(s);
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    private int answers(TeamSimulation sim, String parent, String child) {
+        return sent(sim, parent, child, 0, MessageType.STATUS, MessageType.ECHO).size();
     }
 
     @Test
-    void eachChildGetsOneStatusAPeriod() {
+    void eachChildGetsOneAnswerAPeriod_anEchoWhileNothingChanges() {
         TeamSimulation sim = formedTeam(51);
         sim.run(20 * PERIOD);
         for (String parent : List.of("cdr", "s1", "s2")) {
             for (String child : sim.cell(parent).children().keySet()) {
-                int n = statusesTo(sim, parent, child);
+                int n = answers(sim, parent, child);
                 // One answer per heartbeat, twenty heartbeats (a period's jitter either way); two a
                 // period (an answer and the tick's own) would be about forty.
-                assertTrue(n >= 19 && n <= 21, parent + " sent " + n + " statuses to " + child + " in 20 periods");
+                assertTrue(n >= 19 && n <= 21, parent + " answered " + child + " " + n + " times in 20 periods");
+                int full = sent(sim, parent, child, 0, MessageType.STATUS).size();
+                assertEquals(0, full, parent + " sent " + child + " " + full + " whole statuses in a team where nothing changed");
             }
         }
+    }
+
+    @Test
+    void unchangedSubtreeReportsGoOnceInSixteenHeartbeats() {
+        TeamSimulation sim = formedTeam(53);
+        sim.run(32 * PERIOD);
+        for (String parent : List.of("cdr", "s1", "s2")) {
+            for (String child : sim.cell(parent).children().keySet()) {
+                int n = sent(sim, child, parent, 0, MessageType.SUBTREE_REPORT).size();
+                int beats = sent(sim, child, parent, 0, MessageType.HEARTBEAT).size();
+                // 32 heartbeats, a report with every sixteenth: two (three with the jitter); with
+                // every fourth, as before, eight.
+                assertTrue(beats >= 31 && n >= 1 && n <= 3, child + " sent " + n + " reports with " + beats + " heartbeats");
+            }
+        }
+    }
+
+    @Test
+    void aChangedStatusGoesWholeUntilTheChildsHeartbeatNamesIt_evenWhenTheFirstCopiesAreLost() {
+        TeamSimulation sim = formedTeam(54);
+        List<String> children = new ArrayList<>(sim.cell("cdr").children().keySet());
+        assertTrue(children.size() >= 2, "cdr has two children: " + children);
+        String cut = children.get(0);
+        String leaving = children.get(1);
+        // Nothing from cdr reaches `cut` for two periods (well within its lease), while the team
+        // shrinks: cdr's status changes (its team size), so its answers to `cut` are whole statuses,
+        // all lost.
+        sim.network().setLink(sim.address("cdr"), sim.address(cut), LinkProfile.DEFAULT.withLoss(1.0));
+        long cutAt = sim.nowMillis();
+        sim.leave(leaving);
+        sim.run(2 * PERIOD);
+        assertTrue(sent(sim, "cdr", cut, cutAt, MessageType.STATUS).size() >= 1, "cdr's status changed while the link was cut");
+        sim.network().clearLinks();
+        long healedAt = sim.nowMillis();
+        sim.run(4 * PERIOD);
+        List<Sent> after = sent(sim, "cdr", cut, healedAt, MessageType.STATUS, MessageType.ECHO);
+        assertTrue(after.size() >= 3, "cdr answered " + cut + " " + after.size() + " times in 4 periods");
+        // The child still names the old version: the first answer after the cut is the whole status
+        // (an answer sent whole only when the status changes would be an echo here) ...
+        assertEquals(MessageType.STATUS.code(), after.get(0).type(), "the first answer after the cut: " + after);
+        // ... and once its heartbeat names the new version, echoes again.
+        assertEquals(MessageType.ECHO.code(), after.get(after.size() - 1).type(), "the last answer: " + after);
+        assertTrue(sim.cell("cdr").children().containsKey(cut), "the child kept its seat");
     }
 
     @Test
@@ -90,7 +151,7 @@ class SteadyStateTrafficTest {
         sim.network().setLink(sim.address(child), sim.address("cdr"), LinkProfile.DEFAULT.withLoss(1.0));
         int failuresBefore = failures();
         sim.run(5 * PERIOD); // shorter than the failure timeout (six periods)
-        int n = statusesTo(sim, "cdr", child);
+        int n = answers(sim, "cdr", child);
         // Unanswered heartbeats: the tick sends a status when none went for a period and a half, so
         // two or three in five periods (none at all if only heartbeats were answered).
         assertTrue(n >= 2 && n <= 4, "cdr sent " + n + " statuses to " + child + " while its heartbeats were lost");
