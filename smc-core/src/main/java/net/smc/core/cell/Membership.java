@@ -48,6 +48,14 @@ final class Membership {
     private int reportCountdown;
     /** Copies of the latest changed report still to send, one a heartbeat. */
     private int reportRepeats;
+    /**
+     * Whether the parent's latest answer echoed no heartbeat: it does not vouch for the seats this
+     * cell holds (its table disagrees, or it adopted this cell from a roster) until a subtree report
+     * of them agrees with its table. While so, the report goes with every heartbeat: an unchanged
+     * report every {@link #REPORT_TICKS} heartbeats would leave a suspended child waiting as long
+     * for each try, and on a lossy link several tries in a row may be lost.
+     */
+    private boolean unconfirmed;
     private List<Object> lastReport = List.of();
 
     Membership(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Reports reports) {
@@ -96,6 +104,8 @@ final class Membership {
             send = true;
         } else if (reportRepeats > 0) {
             reportRepeats--;
+            send = true;
+        } else if (unconfirmed || st.suspended()) {
             send = true;
         } else {
             send = --reportCountdown <= 0;
@@ -160,6 +170,7 @@ final class Membership {
     /** The parent was heard; its echo of a heartbeat (by its tag; 0: none) renews the lease from that heartbeat's sending. */
     private void renew(long tag) {
         st.lastStatusMillis = ctx.clock().nowMillis();
+        unconfirmed = tag == 0;
         Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
         if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
             st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
