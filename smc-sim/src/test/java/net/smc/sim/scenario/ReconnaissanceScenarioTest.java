@@ -38,11 +38,11 @@ class ReconnaissanceScenarioTest {
     private static final long SHORT_RUN = 260_000;
 
     private static ReconnaissanceScenario run;
-    private static ReconnaissanceScenario.Outcome outcome;
+    private static ReconnaissanceOutcome outcome;
 
     @BeforeAll
     static void shortRun() throws Exception {
-        run = ReconnaissanceScenario.load(PROJECT, ReconnaissanceScenario.Settings.of(1).withLimit(SHORT_RUN), row -> { });
+        run = ReconnaissanceScenario.load(PROJECT, ReconnaissanceSettings.of(1).withLimit(SHORT_RUN), row -> { });
         outcome = run.run();
     }
 
@@ -163,9 +163,9 @@ class ReconnaissanceScenarioTest {
     }
 
     private static void checkGoal(long seed) throws Exception {
-        ReconnaissanceScenario s = ReconnaissanceScenario.load(PROJECT, ReconnaissanceScenario.Settings.of(seed)
+        ReconnaissanceScenario s = ReconnaissanceScenario.load(PROJECT, ReconnaissanceSettings.of(seed)
                 .withSecurity(TeamSimulation.Security.IDEAL), row -> { });
-        ReconnaissanceScenario.Outcome o = s.run();
+        ReconnaissanceOutcome o = s.run();
         assertTrue(o.succeeded(), () -> "seed " + seed + ": " + o.reason());
         assertTrue(o.coverage() >= 0.9, "seed " + seed + ": coverage " + o.coverage());
         assertEquals(s.world().arena().hazards().size(), o.hazardsFound().size(), "seed " + seed + ": every hazard");
