@@ -35,7 +35,8 @@ import net.smc.sim.map.Zone;
  * behind something the ring cannot see past: a cell straddling a wall, whose unknown neighbour is
  * the far side of the wall, is the common case. Those unknown cells are taken to be hidden and make
  * no frontier for this robot again; without that, such cells along every wall drew the robot back
- * again and again.
+ * again and again. For the same reason a cell the ring has struck is no frontier even when rays
+ * passing beside it have freed it since.
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
@@ -70,6 +71,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private final Set<Integer> reportedObstacles = new HashSet<>();
     private final SetAside setAside = new SetAside();
     private final Set<Integer> hidden = new HashSet<>();
+    private final boolean[] struck;
     private final Set<String> sighted = new HashSet<>();
     private final List<Zone> zones = new java.util.ArrayList<>();
     private boolean exploring;
@@ -91,6 +93,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     public Explorer(RobotHardware hardware, OccupancyGrid map) {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
+        this.struck = new boolean[map.cols() * map.rows()];
         this.planner = new PathPlanner(CLEARANCE);
         this.narrow = new PathPlanner(hardware.drive().wheelBase() / 2 + 0.05);
         this.current = planner;
@@ -191,8 +194,11 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         now = time;
         for (Point hit : RangeMapper.observe(hardware, map)) {
             int cell = map.col(hit.x()) + map.row(hit.y()) * map.cols();
-            if (map.covers(hit.x(), hit.y()) && reportedObstacles.add(cell)) {
-                obstacle(hit.x(), hit.y());
+            if (map.covers(hit.x(), hit.y())) {
+                struck[cell] = true;
+                if (reportedObstacles.add(cell)) {
+                    obstacle(hit.x(), hit.y());
+                }
             }
         }
         look();
@@ -331,11 +337,13 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     }
 
     /**
-     * A free cell with an unknown neighbour (4-connected) that is not hidden: one the robot may
-     * still learn something from.
+     * A free cell with an unknown neighbour (4-connected) that is not hidden, and that the ring has
+     * never struck: one the robot may still learn something from. A struck cell free now holds an
+     * edge of something (the cell straddles a wall or a table's side, and rays passing beside the
+     * edge freed it): its unknown side is the inside of that thing.
      */
     boolean frontier(int c, int r) {
-        if (!map.isFree(c, r)) {
+        if (!map.isFree(c, r) || struck[c + r * map.cols()]) {
             return false;
         }
         int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};

@@ -184,6 +184,28 @@ class ExplorerTest {
         assertTrue(explorer.isExploring(), "after the time set aside, it tries again");
     }
 
+    /**
+     * A cell the ring struck (the side of a thick wall) that rays passing beside it later free again
+     * holds the wall's edge: its unknown side is the inside of the wall, and it is no frontier.
+     */
+    @Test
+    void aCellTheRingStruck_isNoFrontierWhenFreedAgain() {
+        FakeWorld world = new FakeWorld(4, 4).box(2.0, 0, 3.0, 4);
+        FakeRobot robot = world.robot("r1", 1.4, 2.1, 0);
+        OccupancyGrid map = new OccupancyGrid(0, 0, 4, 4, 0.25);
+        Explorer explorer = new Explorer(robot, map);
+        explorer.start();
+        world.step(0.05);
+        int wallCol = map.col(2.05);
+        int row = map.row(2.1);
+        assertTrue(map.isOccupied(wallCol, row), "the ring struck the wall's side");
+        for (int i = 0; i < 10; i++) {
+            map.markFree(2.1, 2.1);   // rays passing beside the edge
+        }
+        assertTrue(map.isFrontier(wallCol, row), "free again, with the wall's inside unknown beyond it");
+        assertFalse(explorer.frontier(wallCol, row), "but no frontier to the robot that struck it");
+    }
+
     @Test
     void merge_fillsWhatTheRobotDoesNotKnow_andKeepsWhatItSaw() {
         FakeWorld world = new FakeWorld(2, 1);
