@@ -29,13 +29,16 @@ import org.junit.jupiter.params.provider.MethodSource;
  * passes through the minimal and the reasonably-optimal configurations, contracts when a
  * detector's battery dies and grows again when the spare enters, names every change on the
  * timeline, and its hazard map shows what it claims. The mission's goal (90% of the free floor
- * and every hazard on the map) is checked on full missions of seeds 1..N with
- * {@code -Ptest.smc.recon.seeds=N} (about a minute of wall time per seed on this machine); it is
- * not met on every seed yet (see the README), so it is not part of the default run.
+ * and every hazard on the map within the 900 s limit) is checked on full missions of seeds 1 to
+ * {@value #SAMPLE} in every run, and of the further seeds up to N with {@code -Ptest.smc.recon.seeds=N} (the README
+ * gives the figures measured on 50 seeds; a run ends when the goal is met, some 10 to 20 s of
+ * wall time per seed).
  */
 class ReconnaissanceScenarioTest {
     private static final Path PROJECT = Path.of(System.getProperty("smc.project.dir", ".."));
     private static final long SHORT_RUN = 260_000;
+    /** Seeds 1 to this are run to the goal in every test run. */
+    static final int SAMPLE = 5;
 
     private static ReconnaissanceScenario run;
     private static ReconnaissanceOutcome outcome;
@@ -151,8 +154,19 @@ class ReconnaissanceScenarioTest {
         }
     }
 
+    static LongStream sample() {
+        return LongStream.rangeClosed(1, SAMPLE);
+    }
+
+    @ParameterizedTest
+    @MethodSource("sample")
+    void theGoalIsMetOnTheSample(long seed) throws Exception {
+        checkGoal(seed);
+    }
+
+    /** Seeds {@value #SAMPLE} + 1 to N with {@code -Ptest.smc.recon.seeds=N}: with the sample, seeds 1 to N. */
     static LongStream seeds() {
-        return LongStream.rangeClosed(1, Long.getLong("smc.recon.seeds", 0));
+        return LongStream.rangeClosed(SAMPLE + 1, Long.getLong("smc.recon.seeds", 0));
     }
 
     @ParameterizedTest
