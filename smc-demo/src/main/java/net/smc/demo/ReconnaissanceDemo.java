@@ -17,7 +17,9 @@ import net.smc.sim.render.Timeline;
 import net.smc.sim.render.ViewControls;
 import net.smc.sim.render.WorldPainter;
 import net.smc.sim.render.WorldWindow;
+import net.smc.sim.scenario.ReconnaissanceOutcome;
 import net.smc.sim.scenario.ReconnaissanceScenario;
+import net.smc.sim.scenario.ReconnaissanceSettings;
 import net.smc.sim.scenario.RescueScenario;
 import net.smc.sim.team.TeamSimulation;
 
@@ -48,7 +50,7 @@ final class ReconnaissanceDemo {
      */
     int run(long seed, double loss, long limitMillis, boolean gui, double speed, Path dir) throws IOException, InterruptedException,
             MissionException, ArenaException {
-        ReconnaissanceScenario.Settings settings = ReconnaissanceScenario.Settings.of(seed).withLoss(loss)
+        ReconnaissanceSettings settings = ReconnaissanceSettings.of(seed).withLoss(loss)
                 .withSecurity(TeamSimulation.Security.REAL).withFilm(FILM);
         if (limitMillis > 0) {
             settings = settings.withLimit(limitMillis);
@@ -62,7 +64,7 @@ final class ReconnaissanceDemo {
             showWhileRunning(recon, speed);
         }
         recon.advance(Long.MAX_VALUE);
-        ReconnaissanceScenario.Outcome outcome = recon.finish();
+        ReconnaissanceOutcome outcome = recon.finish();
         double wallSeconds = (System.nanoTime() - wall) / 1e9;
         BufferedImage map = new WorldPainter().render(recon.world(), recon.hazardMapScene(), WIDTH, HEIGHT);
         ImageIO.write(map, "png", dir.resolve("reconnaissance-map.png").toFile());

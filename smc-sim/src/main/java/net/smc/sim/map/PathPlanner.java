@@ -11,11 +11,16 @@ import java.util.Optional;
  * robot when an occupied cell lies within {@code clearance} of it (the robot's radius and a little
  * room), or when its centre lies within an avoided zone grown by the margin and by half a cell's
  * diagonal (so no point of an open cell is inside the zone plus margin). Unknown cells are open but
- * cost {@link #UNKNOWN_COST} times a free one, so known routes are preferred.
+ * cost {@link #UNKNOWN_COST} times a free one, so known routes are preferred. A robot standing in a
+ * closed region (beside another robot, or inside a zone it has just been told to avoid) may cross
+ * its closed cells, never an occupied one, until it reaches an open cell; each costs
+ * {@link #CLOSED_COST} times a free one, so it leaves by the shortest way out.
  */
 public final class PathPlanner {
     /** The cost factor of crossing an unknown cell. */
     public static final double UNKNOWN_COST = 1.5;
+    /** The cost factor of crossing a closed cell on the way out of the closed region the robot stands in. */
+    public static final double CLOSED_COST = 4;
 
     private final double clearance;
 
@@ -87,7 +92,8 @@ public final class PathPlanner {
     /**
      * A path from {@code start} to {@code goal}: the waypoints after the start cell, ending at the
      * goal itself; empty when the goal is off the grid, closed, or cannot be reached. The start
-     * cell may be closed (the robot may stand close to an obstacle); it is left by the first step.
+     * cell may be closed (the robot may stand close to an obstacle, or in a zone): the path then
+     * first crosses the closed region around it, through cells that are not occupied.
      */
     public Optional<List<Point>> plan(OccupancyGrid grid, Point start, Point goal, List<Zone> avoid, double margin) {
         if (!grid.covers(goal.x(), goal.y())) {
@@ -134,14 +140,19 @@ public final class PathPlanner {
                         continue;
                     }
                     int next = (c + dc) + (r + dr) * cols;
-                    if (closed[next] || done[next]) {
+                    // Closed cells are reached only from the start's closed region: from there, any
+                    // cell not occupied may be entered, until the path reaches an open cell.
+                    boolean leaving = closed[cell];
+                    if (done[next] || closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr))) {
                         continue;
                     }
-                    if (dc != 0 && dr != 0 && (closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols])) {
+                    if (dc != 0 && dr != 0 && (leaving
+                            ? grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr)
+                            : closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols])) {
                         continue;
                     }
                     double step = (dc != 0 && dr != 0 ? Math.sqrt(2) : 1)
-                            * (grid.isKnown(c + dc, r + dr) ? 1 : UNKNOWN_COST);
+                            * (grid.isKnown(c + dc, r + dr) ? 1 : UNKNOWN_COST) * (closed[next] ? CLOSED_COST : 1);
                     if (cost[cell] + step < cost[next]) {
                         cost[next] = cost[cell] + step;
                         from[next] = cell;

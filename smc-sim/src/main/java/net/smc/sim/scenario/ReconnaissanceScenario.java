@@ -7,7 +7,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
 import java.util.function.Consumer;
@@ -51,12 +50,12 @@ import net.smc.sim.world.WorldStepListener;
  * <p>The scenario only powers the robots on at their times and drains the battery; it watches the
  * team's configuration (a timeline row for each change), the aggregator's map (the share of the
  * free floor it knows, {@link FloorCoverage}) and its hazards. The goal: at least
- * {@link Settings#coverageGoal} of the free floor on the aggregator's map and every hazard of the
+ * {@link ReconnaissanceSettings#coverageGoal} of the free floor on the aggregator's map and every hazard of the
  * house on it (within {@link #FOUND_WITHIN} of its centre, of its kind).
  *
  * <pre>{@code
- * ReconnaissanceScenario recon = ReconnaissanceScenario.load(Path.of("."), ReconnaissanceScenario.Settings.of(7), row -> { });
- * ReconnaissanceScenario.Outcome outcome = recon.run();   // outcome.succeeded(), recon.timeline() ...
+ * ReconnaissanceScenario recon = ReconnaissanceScenario.load(Path.of("."), ReconnaissanceSettings.of(7), row -> { });
+ * ReconnaissanceOutcome outcome = recon.run();   // outcome.succeeded(), recon.timeline() ...
  * }</pre>
  */
 public final class ReconnaissanceScenario {
@@ -81,83 +80,7 @@ public final class ReconnaissanceScenario {
     /** World steps between two looks at the hazard map (0.2 s): its coverage and hazards. */
     private static final int WATCH_EVERY_STEPS = 10;
 
-    /** One robot's entrance: the vehicle, where it waits, and when it is switched on (mission time, ms). */
-    public record Arrival(SimVehicle vehicle, String start, long atMillis) {
-        public Arrival {
-            Objects.requireNonNull(vehicle, "vehicle");
-            Objects.requireNonNull(start, "start");
-        }
-    }
-
-    /**
-     * How to run it.
-     *
-     * @param seed          fixes every random draw of the run
-     * @param loss          probability that the network loses a datagram, on top of the radio, 0 to below 1
-     * @param limitMillis   mission time after which the run gives up, ms
-     * @param security      how cells authenticate
-     * @param film          settings of the GIF film, or null for none
-     * @param failureMillis when the failing robot's battery dies, ms of mission time (negative: never)
-     * @param coverageGoal  the share of the free floor the hazard map must know, 0 to 1
-     */
-    public record Settings(long seed, double loss, long limitMillis, TeamSimulation.Security security,
-                           GifRecorder.Settings film, long failureMillis, double coverageGoal) {
-        public Settings {
-            if (!(loss >= 0 && loss < 1)) {
-                throw new IllegalArgumentException("loss " + loss + " is out of range; it must be 0 or more and below 1");
-            }
-            if (limitMillis <= 0) {
-                throw new IllegalArgumentException("limit " + limitMillis + " ms must be positive");
-            }
-            if (!(coverageGoal > 0 && coverageGoal <= 1)) {
-                throw new IllegalArgumentException("coverage goal " + coverageGoal + " is out of range; it must be above 0 and at most 1");
-            }
-            Objects.requireNonNull(security, "security");
-        }
-
-        /** No extra loss, 900 s of mission time, ideal authentication, no film, the battery dies at 70 s, 90% of the floor. */
-        public static Settings of(long seed) {
-            return new Settings(seed, 0, 900_000, TeamSimulation.Security.IDEAL, null, 70_000, 0.9);
-        }
-
-        public Settings withLoss(double p) {
-            return new Settings(seed, p, limitMillis, security, film, failureMillis, coverageGoal);
-        }
-
-        public Settings withLimit(long millis) {
-            return new Settings(seed, loss, millis, security, film, failureMillis, coverageGoal);
-        }
-
-        public Settings withFilm(GifRecorder.Settings f) {
-            return new Settings(seed, loss, limitMillis, security, f, failureMillis, coverageGoal);
-        }
-
-        public Settings withSecurity(TeamSimulation.Security s) {
-            return new Settings(seed, loss, limitMillis, s, film, failureMillis, coverageGoal);
-        }
-
-        public Settings withFailureAt(long millis) {
-            return new Settings(seed, loss, limitMillis, security, film, millis, coverageGoal);
-        }
-    }
-
-    /**
-     * How a run ended.
-     *
-     * @param succeeded      whether the goal was met
-     * @param reason         what was achieved, or why not
-     * @param missionMillis  mission time at the end, ms
-     * @param coverage       the share of the free floor on the aggregator's map at the end
-     * @param coverageMillis when the map first reached the coverage goal, or -1
-     * @param hazardsFound   the house's hazards on the aggregator's map, by id
-     * @param standings      the standings the team passed through, in order, each once per stretch
-     *                       ("forming", "minimal", "grown", "optimal")
-     */
-    public record Outcome(boolean succeeded, String reason, long missionMillis, double coverage, long coverageMillis,
-                          List<String> hazardsFound, List<String> standings) {
-    }
-
-    private final Settings settings;
+    private final ReconnaissanceSettings settings;
     private final TeamSimulation team;
     private final WorldTeam world;
     private final Arena arena;
@@ -178,7 +101,7 @@ public final class ReconnaissanceScenario {
     private long coverageMillis = -1;
     private int reportedTenths;
 
-    private ReconnaissanceScenario(ScenarioFiles files, Settings settings, Consumer<Timeline.Row> printer) {
+    private ReconnaissanceScenario(ScenarioFiles files, ReconnaissanceSettings settings, Consumer<Timeline.Row> printer) {
         this.settings = settings;
         this.arena = files.arena();
         this.log = new ScenarioLog(printer);
@@ -244,14 +167,14 @@ public final class ReconnaissanceScenario {
      * @throws MissionException when the mission is invalid (every error listed)
      * @throws ArenaException   when the world file is invalid
      */
-    public static ReconnaissanceScenario load(Path projectDir, Settings settings, Consumer<Timeline.Row> printer)
+    public static ReconnaissanceScenario load(Path projectDir, ReconnaissanceSettings settings, Consumer<Timeline.Row> printer)
             throws IOException, MissionException, ArenaException {
         return new ReconnaissanceScenario(ScenarioFiles.load(projectDir, "reconnaissance-house.instance.xml", "house.xml"),
                 settings, printer);
     }
 
     /** Runs until the goal is met or the time limit. */
-    public Outcome run() {
+    public ReconnaissanceOutcome run() {
         start();
         advance(settings.limitMillis());
         return finish();
@@ -311,7 +234,7 @@ public final class ReconnaissanceScenario {
     }
 
     /** Ends the run and tells how it went. */
-    public Outcome finish() {
+    public ReconnaissanceOutcome finish() {
         watch();
         if (film != null) {
             film.capture(world.world());
@@ -329,8 +252,8 @@ public final class ReconnaissanceScenario {
         return outcome(false, why);
     }
 
-    private Outcome outcome(boolean ok, String reason) {
-        return new Outcome(ok, reason, team.nowMillis(), coverage, coverageMillis, List.copyOf(found), List.copyOf(standings));
+    private ReconnaissanceOutcome outcome(boolean ok, String reason) {
+        return new ReconnaissanceOutcome(ok, reason, team.nowMillis(), coverage, coverageMillis, List.copyOf(found), List.copyOf(standings));
     }
 
     /**
@@ -450,7 +373,7 @@ public final class ReconnaissanceScenario {
         return log.timeline();
     }
 
-    public Settings settings() {
+    public ReconnaissanceSettings settings() {
         return settings;
     }
 

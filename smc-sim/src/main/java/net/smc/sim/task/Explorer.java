@@ -1,12 +1,14 @@
 package net.smc.sim.task;
 
 import java.util.ArrayDeque;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import net.smc.policy.api.ArrayValue;
 import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.RobotHardware;
 import net.smc.sim.hardware.Sighting;
@@ -24,8 +26,17 @@ import net.smc.sim.map.Zone;
  * each one, which leaves the middle two cells of a 1 m doorway open and keeps the 0.32 m body off
  * the jambs; when no frontier is open with that clearance it plans with less: the body's
  * half-width and 5 cm. Something in the way makes it back off and plan again to the same frontier, up to
- * {@link #OBSTRUCTIONS} times; a frontier it cannot reach is then not tried again until
- * {@link #explore()}.
+ * {@link #OBSTRUCTIONS} times. A frontier it gave up on (no way there, stalled, obstructed) is set
+ * aside with the frontier cells within {@link #SET_ASIDE_RADIUS} of it, for
+ * {@link #SET_ASIDE_SECONDS} the first time and twice as long at each further failure there, up to
+ * {@link #SET_ASIDE_MAX_SECONDS}: the rest of the house is explored first, and the way there may be
+ * open by then (a robot stood in a doorway, say). A frontier whose unknown side stays unknown while
+ * the robot stands within {@link #LOOKED_FROM} of it for {@link #LOOK_SECONDS} (or on it) lies
+ * behind something the ring cannot see past: a cell straddling a wall, whose unknown neighbour is
+ * the far side of the wall, is the common case. Those unknown cells are taken to be hidden and make
+ * no frontier for this robot again; without that, such cells along every wall drew the robot back
+ * again and again. For the same reason a cell the ring has struck is no frontier even when rays
+ * passing beside it have freed it since.
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
@@ -35,6 +46,22 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     static final double CLEARANCE = 0.36;
     /** How often something in the way may stop the robot on its way to one frontier before it gives that frontier up. */
     static final int OBSTRUCTIONS = 3;
+    /** How long a frontier given up on is set aside the first time, s. */
+    static final double SET_ASIDE_SECONDS = 20;
+    /** The longest a frontier is set aside, s. */
+    static final double SET_ASIDE_MAX_SECONDS = 160;
+    /**
+     * How close to a frontier cell the robot must come for its ring (2 m in the house) to have seen
+     * past it, m: an unknown cell beside it that is still unknown then lies behind something (the
+     * far side of a wall the cell straddles, say) and is taken to be hidden from this robot.
+     */
+    static final double LOOKED_FROM = 0.6;
+    /** How long the robot must stay within {@link #LOOKED_FROM} of its frontier before its unknown side is taken to be hidden, s. */
+    static final double LOOK_SECONDS = 1.5;
+    /** A frontier given up on (obstructed, stalled) this close has its unknown side taken to be hidden, m. */
+    static final double GAVE_UP_NEAR = 1.0;
+    /** Frontier cells within this of one given up on are set aside with it, m: they share its unknown region. */
+    static final double SET_ASIDE_RADIUS = 0.5;
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
@@ -42,7 +69,9 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private PathPlanner current;
     private final PathFollower follower;
     private final Set<Integer> reportedObstacles = new HashSet<>();
-    private final Set<Integer> unreachable = new HashSet<>();
+    private final SetAside setAside = new SetAside();
+    private final Set<Integer> hidden = new HashSet<>();
+    private final boolean[] struck;
     private final Set<String> sighted = new HashSet<>();
     private final List<Zone> zones = new java.util.ArrayList<>();
     private boolean exploring;
@@ -54,6 +83,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private double stallY;
     private double stallSince;
     private int obstructed;
+    private double now;
+    private double nearSince = Double.NaN;
 
     public Explorer(TaskContext context) {
         this(context.hardware(), context.map());
@@ -62,6 +93,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     public Explorer(RobotHardware hardware, OccupancyGrid map) {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
+        this.struck = new boolean[map.cols() * map.rows()];
         this.planner = new PathPlanner(CLEARANCE);
         this.narrow = new PathPlanner(hardware.drive().wheelBase() / 2 + 0.05);
         this.current = planner;
@@ -75,7 +107,6 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     @Override
     public void explore() {
         exploring = true;
-        unreachable.clear();
         target = -1;
     }
 
@@ -116,6 +147,14 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     }
 
     @Override
+    public void merge(ArrayValue cells) {
+        java.util.Objects.requireNonNull(cells, "cells");
+        Map<String, Object> state = map.toState();
+        state.put("cells", cells.items());
+        map.fillUnknown(OccupancyGrid.fromState(state));
+    }
+
+    @Override
     public void mapUpdate(String name, String uav, List<String> cells) {
         raise("mapUpdate", name, uav, cells);
     }
@@ -152,10 +191,14 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
 
     @Override
     protected void step(double time, double dt) {
+        now = time;
         for (Point hit : RangeMapper.observe(hardware, map)) {
             int cell = map.col(hit.x()) + map.row(hit.y()) * map.cols();
-            if (map.covers(hit.x(), hit.y()) && reportedObstacles.add(cell)) {
-                obstacle(hit.x(), hit.y());
+            if (map.covers(hit.x(), hit.y())) {
+                struck[cell] = true;
+                if (reportedObstacles.add(cell)) {
+                    obstacle(hit.x(), hit.y());
+                }
             }
         }
         look();
@@ -188,10 +231,20 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             hardware.drive().setWheelSpeeds(back, back);
             return;
         }
-        if (target >= 0 && !map.isFrontier(target % map.cols(), target / map.cols())) {
+        if (target >= 0 && !frontier(target % map.cols(), target / map.cols())) {
             target = -1;
         }
         Pose pose = hardware.odometry().pose();
+        if (target >= 0 && near(pose, target, LOOKED_FROM)) {
+            if (Double.isNaN(nearSince)) {
+                nearSince = time;
+            } else if (time - nearSince >= LOOK_SECONDS) {
+                // Close for long enough for the ring to have seen past it: what is still unknown there is hidden.
+                hide(target);
+                follower.clear();
+                target = -1;
+            }
+        }
         if (target < 0 && !chooseTarget(pose)) {
             exploring = false;
             follower.clear();
@@ -202,9 +255,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         PathFollower.Status st = follower.step();
         switch (st) {
             case ARRIVED, IDLE -> {
-                // Standing on it, the robot saw what it could: a frontier still open from here
-                // (its unknown side hidden from the sensors) is not chosen again.
-                unreachable.add(target);
+                // Standing on it, the robot saw what it could: what is still unknown there is hidden.
+                hide(target);
                 target = -1;
             }
             case OBSTRUCTED -> {
@@ -250,6 +302,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 Optional<List<Point>> path = p.plan(map, new Point(pose.x(), pose.y()), goal, zones, 0);
                 if (path.isPresent()) {
                     target = next.get();
+                    nearSince = Double.NaN;
                     current = p;
                     obstructed = 0;
                     follower.follow(path.get(), map.resolution());
@@ -257,7 +310,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 }
                 failed.add(next.get());
                 if (p == narrow) {
-                    unreachable.add(next.get());
+                    setAside.add(next.get(), now);
                 }
             }
         }
@@ -273,11 +326,52 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     }
 
     private void giveUpTarget(double time) {
-        unreachable.add(target);
+        if (near(hardware.odometry().pose(), target, GAVE_UP_NEAR)) {
+            hide(target);
+        }
+        setAside.add(target, time);
         target = -1;
         follower.clear();
         backOffUntil = time + 0.5;
         stallX = Double.NaN;
+    }
+
+    /**
+     * A free cell with an unknown neighbour (4-connected) that is not hidden, and that the ring has
+     * never struck: one the robot may still learn something from. A struck cell free now holds an
+     * edge of something (the cell straddles a wall or a table's side, and rays passing beside the
+     * edge freed it): its unknown side is the inside of that thing.
+     */
+    boolean frontier(int c, int r) {
+        if (!map.isFree(c, r) || struck[c + r * map.cols()]) {
+            return false;
+        }
+        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (int[] s : steps) {
+            int nc = c + s[0];
+            int nr = r + s[1];
+            if (map.inside(nc, nr) && !map.isKnown(nc, nr) && !hidden.contains(nc + nr * map.cols())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The unknown neighbours of a frontier cell the robot came close to, and still unknown: hidden from its sensors. */
+    private void hide(int cell) {
+        int c = cell % map.cols();
+        int r = cell / map.cols();
+        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (int[] s : steps) {
+            if (map.inside(c + s[0], r + s[1]) && !map.isKnown(c + s[0], r + s[1])) {
+                hidden.add(c + s[0] + (r + s[1]) * map.cols());
+            }
+        }
+    }
+
+    private boolean near(Pose pose, int cell, double metres) {
+        Point p = map.centre(cell % map.cols(), cell / map.cols());
+        return Math.hypot(p.x() - pose.x(), p.y() - pose.y()) <= metres;
     }
 
     /**
@@ -313,7 +407,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             int cell = queue.poll();
             int c = cell % cols;
             int r = cell / cols;
-            if (cell != start && map.isFrontier(c, r) && !unreachable.contains(cell) && !failed.contains(cell)
+            if (cell != start && frontier(c, r) && !setAside.holds(c, r, now) && !failed.contains(cell)
                     && !besideObstacle(c, r)) {
                 return Optional.of(cell);
             }
@@ -360,6 +454,36 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         }
         if (state.get("exploring") instanceof Boolean b && b) {
             explore();
+        }
+    }
+
+    /** Whether the frontier cell is set aside now (for tests). */
+    boolean isSetAside(int col, int row) {
+        return setAside.holds(col, row, now);
+    }
+
+    /**
+     * Frontiers given up on, each with the time until which it and the frontier cells around it
+     * are not chosen, and how often it was given up on.
+     */
+    private final class SetAside {
+        private final Map<Integer, Double> until = new LinkedHashMap<>();
+        private final Map<Integer, Integer> failures = new HashMap<>();
+
+        void add(int cell, double time) {
+            int n = failures.merge(cell, 1, Integer::sum);
+            until.put(cell, time + Math.min(SET_ASIDE_MAX_SECONDS, SET_ASIDE_SECONDS * Math.pow(2, n - 1)));
+        }
+
+        boolean holds(int col, int row, double time) {
+            until.values().removeIf(t -> t <= time);
+            double reach = SET_ASIDE_RADIUS / map.resolution();
+            for (int cell : until.keySet()) {
+                if (Math.hypot(cell % map.cols() - col, cell / map.cols() - row) <= reach + 1e-9) {
+                    return true;
+                }
+            }
+            return false;
         }
     }
 }

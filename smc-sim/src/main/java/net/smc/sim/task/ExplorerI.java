@@ -4,6 +4,7 @@ import java.util.List;
 import net.smc.core.task.Attr;
 import net.smc.core.task.TaskEvent;
 import net.smc.core.task.TaskInterface;
+import net.smc.policy.api.ArrayValue;
 import net.smc.policy.api.Op;
 
 /** The task interface of {@link Explorer}: explore the arena into the robot's map. */
@@ -31,6 +32,15 @@ public interface ExplorerI {
      */
     @Op("shareMap")
     void shareMap();
+
+    /**
+     * Fills the unknown cells of the robot's map from another robot's, given as its rows
+     * ({@code mapUpdate}'s {@code cells}); what its own sensors saw stands. Frontiers the other has
+     * already mapped are then no longer frontiers here, so two surveyors sharing their maps do not
+     * map the same rooms twice.
+     */
+    @Op("merge:")
+    void merge(ArrayValue cells);
 
     /** The share of the map known, 0..1. */
     @Op("exploredFraction")

@@ -14,10 +14,12 @@ import net.smc.sim.map.Zone;
 
 /**
  * Goes to a point: plans with A* on the robot's map ({@link PathPlanner}), keeping out of avoided
- * zones plus the margin, and follows the path. While it drives it keeps mapping from the infrared
- * ring, re-plans every second and whenever something is in the way (after backing off a little),
- * and gives up with {@code blocked} when no path is left or it has made no progress for
- * {@link #PATIENCE} seconds.
+ * zones plus the margin, and follows the path. When no path keeps its clearance it takes one that
+ * keeps only the body's half-width and 5 cm (as the {@link Explorer} does): a doorway whose jamb
+ * cells the ring has struck leaves too little room at the full clearance. While it drives it keeps
+ * mapping from the infrared ring, re-plans every second and whenever something is in the way (after
+ * backing off a little), and gives up with {@code blocked} when no path is left or it has made no
+ * progress for {@link #PATIENCE} seconds.
  */
 public final class Navigator extends RobotTask implements NavigatorI, Handover {
     /** Seconds without getting 0.1 m closer before giving up. */
@@ -27,6 +29,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
+    private final PathPlanner narrow;
     private final PathFollower follower;
     private final List<Zone> zones = new ArrayList<>();
     private double margin = 0.5;
@@ -50,6 +53,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
         this.planner = new PathPlanner(clearance);
+        this.narrow = new PathPlanner(Math.min(clearance, hardware.drive().wheelBase() / 2 + 0.05));
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
     }
 
@@ -151,7 +155,11 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
         if (replan || time >= nextReplan || !follower.active()) {
             replan = false;
             nextReplan = time + REPLAN_PERIOD;
-            Optional<List<Point>> path = planner.plan(map, new Point(pose.x(), pose.y()), goal, zones, margin);
+            Point from = new Point(pose.x(), pose.y());
+            Optional<List<Point>> path = planner.plan(map, from, goal, zones, margin);
+            if (path.isEmpty()) {
+                path = narrow.plan(map, from, goal, zones, margin);
+            }
             if (path.isEmpty()) {
                 giveUp();
                 return;

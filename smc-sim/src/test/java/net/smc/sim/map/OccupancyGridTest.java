@@ -63,4 +63,39 @@ class OccupancyGridTest {
                 "the zone closes the only gap");
         assertTrue(planner.plan(g, new Point(1, 1), new Point(2.5, 4.3), List.of(zone), 0).isEmpty(), "goal in the zone");
     }
+
+    /**
+     * A robot standing deep inside a zone it is to avoid (it was inspecting the hazard when the zone
+     * was set) has a way out: across the zone's closed cells to the nearest open one, then on; an
+     * occupied cell is never crossed, and a goal inside the zone is still refused.
+     */
+    @Test
+    void planner_leavesTheClosedRegionTheRobotStandsIn_butNeverCrossesAnOccupiedCell() {
+        OccupancyGrid g = new OccupancyGrid(0, 0, 6, 6, 0.25);
+        for (int r = 0; r < g.rows(); r++) {
+            for (int c = 0; c < g.cols(); c++) {
+                var p = g.centre(c, r);
+                g.markFree(p.x(), p.y());
+            }
+        }
+        Zone zone = new Zone(3, 3, 1.2);
+        PathPlanner planner = new PathPlanner(0.3);
+        Point inside = new Point(3.1, 2.6);
+        assertTrue(planner.closedCells(g, List.of(zone), 0)[g.col(inside.x()) + 1 + g.row(inside.y()) * g.cols()],
+                "the cells around the robot are closed");
+        List<Point> path = planner.plan(g, inside, new Point(5.5, 5.5), List.of(zone), 0).orElseThrow();
+        assertEquals(new Point(5.5, 5.5), path.get(path.size() - 1));
+        for (int c = 10; c <= 13; c++) {   // a wall of occupied cells across the zone's east half
+            for (int r = 0; r < g.rows(); r++) {
+                var p = g.centre(c, r);
+                g.markOccupied(p.x(), p.y());
+                g.markOccupied(p.x(), p.y());
+            }
+        }
+        assertTrue(planner.plan(g, new Point(2.4, 3), new Point(5.5, 5.5), List.of(zone), 0).isEmpty(),
+                "no way out crosses an occupied cell");
+        assertTrue(planner.plan(g, new Point(2.4, 3), new Point(0.5, 0.5), List.of(zone), 0).isPresent(),
+                "out of the zone to the west");
+        assertTrue(planner.plan(g, new Point(0.5, 0.5), new Point(2.2, 3.3), List.of(zone), 0).isEmpty(), "goal in the zone");
+    }
 }

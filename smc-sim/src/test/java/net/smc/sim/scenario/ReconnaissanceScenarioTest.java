@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.LongStream;
 
+import net.smc.sim.render.Overlays;
 import net.smc.sim.render.Palette;
 import net.smc.sim.render.Pixels;
 import net.smc.sim.render.Timeline;
@@ -29,20 +30,23 @@ import org.junit.jupiter.params.provider.MethodSource;
  * passes through the minimal and the reasonably-optimal configurations, contracts when a
  * detector's battery dies and grows again when the spare enters, names every change on the
  * timeline, and its hazard map shows what it claims. The mission's goal (90% of the free floor
- * and every hazard on the map) is checked on full missions of seeds 1..N with
- * {@code -Ptest.smc.recon.seeds=N} (about a minute of wall time per seed on this machine); it is
- * not met on every seed yet (see the README), so it is not part of the default run.
+ * and every hazard on the map within the 900 s limit) is checked on full missions of seeds 1 to
+ * {@value #SAMPLE} in every run, and of the further seeds up to N with {@code -Ptest.smc.recon.seeds=N} (the README
+ * gives the figures measured on 50 seeds; a run ends when the goal is met, some 10 to 20 s of
+ * wall time per seed).
  */
 class ReconnaissanceScenarioTest {
     private static final Path PROJECT = Path.of(System.getProperty("smc.project.dir", ".."));
     private static final long SHORT_RUN = 260_000;
+    /** Seeds 1 to this are run to the goal in every test run. */
+    static final int SAMPLE = 5;
 
     private static ReconnaissanceScenario run;
-    private static ReconnaissanceScenario.Outcome outcome;
+    private static ReconnaissanceOutcome outcome;
 
     @BeforeAll
     static void shortRun() throws Exception {
-        run = ReconnaissanceScenario.load(PROJECT, ReconnaissanceScenario.Settings.of(1).withLimit(SHORT_RUN), row -> { });
+        run = ReconnaissanceScenario.load(PROJECT, ReconnaissanceSettings.of(1).withLimit(SHORT_RUN), row -> { });
         outcome = run.run();
     }
 
@@ -94,7 +98,9 @@ class ReconnaissanceScenarioTest {
 
     @Test
     void theHazardMapShowsTheReportedHazards_theRobots_andWhatIsNotMapped() {
-        BufferedImage image = new WorldPainter().render(run.world(), run.hazardMapScene(), 1200, 860);
+        // Without the legend, which covers the north-east room, where a robot may stand.
+        BufferedImage image = new WorldPainter().render(run.world(),
+                run.hazardMapScene().overlays(Overlays.defaults().withLegend(false)), 1200, 860);
         assertEquals(1200, image.getWidth());
         assertEquals(860, image.getHeight());
         Viewport v = Viewport.fit(run.world().arena(), 1200, 860);
@@ -118,7 +124,9 @@ class ReconnaissanceScenarioTest {
             boolean crowded = robots.stream().anyMatch(o -> o != r && Math.hypot(o.x() - r.x(), o.y() - r.y()) < 1.0);
             var map = run.hazardMap().orElseThrow();
             boolean shaded = !map.isKnown(map.col(r.x()), map.row(r.y()));   // a surveyor at the edge of what is mapped
-            Color expected = r.disabled() || crowded || shaded ? null : Palette.robot(i);   // another's body or label may cover it
+            // a detector stands where it confirmed a hazard, and the hazard's diamond is drawn there
+            boolean underDiamond = reported.stream().anyMatch(p -> Math.hypot((double) p[0] - r.x(), (double) p[1] - r.y()) < 0.6);
+            Color expected = r.disabled() || crowded || shaded || underDiamond ? null : Palette.robot(i);   // another's body or label may cover it
             if (expected != null) {
                 checked++;
                 assertTrue(Pixels.near(expected, c, 12), "robot " + r.id() + " in its colour: " + Pixels.hex(c));
@@ -151,8 +159,19 @@ class ReconnaissanceScenarioTest {
         }
     }
 
+    static LongStream sample() {
+        return LongStream.rangeClosed(1, SAMPLE);
+    }
+
+    @ParameterizedTest
+    @MethodSource("sample")
+    void theGoalIsMetOnTheSample(long seed) throws Exception {
+        checkGoal(seed);
+    }
+
+    /** Seeds {@value #SAMPLE} + 1 to N with {@code -Ptest.smc.recon.seeds=N}: with the sample, seeds 1 to N. */
     static LongStream seeds() {
-        return LongStream.rangeClosed(1, Long.getLong("smc.recon.seeds", 0));
+        return LongStream.rangeClosed(SAMPLE + 1, Long.getLong("smc.recon.seeds", 0));
     }
 
     @ParameterizedTest
@@ -163,9 +182,9 @@ class ReconnaissanceScenarioTest {
     }
 
     private static void checkGoal(long seed) throws Exception {
-        ReconnaissanceScenario s = ReconnaissanceScenario.load(PROJECT, ReconnaissanceScenario.Settings.of(seed)
+        ReconnaissanceScenario s = ReconnaissanceScenario.load(PROJECT, ReconnaissanceSettings.of(seed)
                 .withSecurity(TeamSimulation.Security.IDEAL), row -> { });
-        ReconnaissanceScenario.Outcome o = s.run();
+        ReconnaissanceOutcome o = s.run();
         assertTrue(o.succeeded(), () -> "seed " + seed + ": " + o.reason());
         assertTrue(o.coverage() >= 0.9, "seed " + seed + ": coverage " + o.coverage());
         assertEquals(s.world().arena().hazards().size(), o.hazardsFound().size(), "seed " + seed + ": every hazard");

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import net.smc.sim.hardware.RobotHardware;
 import net.smc.sim.map.OccupancyGrid;
 import org.junit.jupiter.api.Test;
 
@@ -112,5 +113,109 @@ class ExplorerTest {
         assertTrue(explorer.isExploring(), "a frontier beyond the gap was chosen");
         world.run(20);
         assertTrue(robot.x > 3.0, "it drove towards the gap: x " + robot.x);
+    }
+
+    /** A map of {@code size} x {@code size} m all known free except the unknown cells that {@code unknown} picks. */
+    private static OccupancyGrid freeExcept(double size, java.util.function.BiPredicate<Integer, Integer> unknown) {
+        OccupancyGrid map = new OccupancyGrid(0, 0, size, size, 0.25);
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c < map.cols(); c++) {
+                if (!unknown.test(c, r)) {
+                    var p = map.centre(c, r);
+                    map.markFree(p.x(), p.y());
+                }
+            }
+        }
+        return map;
+    }
+
+    /**
+     * A robot whose ring cannot see the unknown corner (it has no ring here: the corner stands for
+     * the far side of a wall a cell straddles) drives there once, takes what stays unknown there to
+     * be hidden, and stops; told to explore again (as the surveyor's policy does every 2 s) it does
+     * not drive there again.
+     */
+    @Test
+    void aFrontierWhoseUnknownSideStaysUnknownWhenLookedAt_isNotDrivenToAgain() {
+        FakeWorld world = new FakeWorld(4, 4);
+        FakeRobot robot = world.robot("r1", 0.5, 0.5, 0).without(RobotHardware.Device.PROXIMITY);
+        OccupancyGrid map = freeExcept(4, (c, r) -> c >= 14 && r >= 14);
+        Explorer explorer = new Explorer(robot, map);
+        explorer.start();
+        explorer.explore();
+        assertTrue(world.runUntil(() -> !explorer.isExploring(), 60), "it gave the hidden corner up");
+        assertTrue(Math.hypot(robot.x - 3.4, robot.y - 3.4) < 1.0, "it went to look: " + robot.x + "," + robot.y);
+        assertFalse(explorer.frontier(13, 14), "the cell beside the corner is no frontier any more");
+        double x = robot.x;
+        double y = robot.y;
+        for (int i = 0; i < 10; i++) {
+            explorer.explore();
+            world.step(0.05);
+            assertFalse(explorer.isExploring(), "told to explore again, it finds nothing to drive to");
+            world.run(2);
+        }
+        assertEquals(0, Math.hypot(robot.x - x, robot.y - y), 0.05, "it stayed where it was");
+    }
+
+    /**
+     * A frontier the robot cannot get to (a wall not on its map pins it: it stalls) is set aside for
+     * {@link Explorer#SET_ASIDE_SECONDS}: exploring again at once does not choose it, exploring
+     * after that time does.
+     */
+    @Test
+    void aFrontierGivenUpOn_isSetAsideForAWhile_thenTriedAgain() {
+        FakeWorld world = new FakeWorld(4, 4).box(1.5, 0, 1.6, 4);
+        FakeRobot robot = world.robot("r1", 1.3, 2.1, 0).without(RobotHardware.Device.PROXIMITY);
+        OccupancyGrid map = freeExcept(4, (c, r) -> c == 15 && r == 8);
+        Explorer explorer = new Explorer(robot, map);
+        explorer.start();
+        explorer.explore();
+        world.step(0.05);
+        assertTrue(explorer.isExploring());
+        assertTrue(world.runUntil(() -> !explorer.isExploring(), 30), "it gave the frontier up when it stalled");
+        assertTrue(robot.x < 1.5, "the wall held it");
+        assertTrue(explorer.isSetAside(14, 8) && explorer.isSetAside(15, 7), "the frontier and its neighbours are set aside");
+        explorer.explore();
+        world.step(0.05);
+        assertFalse(explorer.isExploring(), "explored again at once, it does not choose the frontier set aside");
+        world.run(Explorer.SET_ASIDE_SECONDS + 1);
+        explorer.explore();
+        world.step(0.05);
+        assertTrue(explorer.isExploring(), "after the time set aside, it tries again");
+    }
+
+    /**
+     * A cell the ring struck (the side of a thick wall) that rays passing beside it later free again
+     * holds the wall's edge: its unknown side is the inside of the wall, and it is no frontier.
+     */
+    @Test
+    void aCellTheRingStruck_isNoFrontierWhenFreedAgain() {
+        FakeWorld world = new FakeWorld(4, 4).box(2.0, 0, 3.0, 4);
+        FakeRobot robot = world.robot("r1", 1.4, 2.1, 0);
+        OccupancyGrid map = new OccupancyGrid(0, 0, 4, 4, 0.25);
+        Explorer explorer = new Explorer(robot, map);
+        explorer.start();
+        world.step(0.05);
+        int wallCol = map.col(2.05);
+        int row = map.row(2.1);
+        assertTrue(map.isOccupied(wallCol, row), "the ring struck the wall's side");
+        for (int i = 0; i < 10; i++) {
+            map.markFree(2.1, 2.1);   // rays passing beside the edge
+        }
+        assertTrue(map.isFrontier(wallCol, row), "free again, with the wall's inside unknown beyond it");
+        assertFalse(explorer.frontier(wallCol, row), "but no frontier to the robot that struck it");
+    }
+
+    @Test
+    void merge_fillsWhatTheRobotDoesNotKnow_andKeepsWhatItSaw() {
+        FakeWorld world = new FakeWorld(2, 1);
+        OccupancyGrid own = new OccupancyGrid(0, 0, 2, 1, 0.5);
+        own.markFree(0.25, 0.25);
+        Explorer explorer = new Explorer(world.robot("r1", 0.25, 0.25, 0).without(RobotHardware.Device.PROXIMITY), own);
+        List<Object> rows = List.of("##.#", "?..?");
+        explorer.merge(() -> rows);
+        assertTrue(own.isFree(0, 0), "its own observation stands");
+        assertTrue(own.isOccupied(1, 0) && own.isFree(2, 0) && own.isFree(1, 1), "the other's cells fill the unknown");
+        assertFalse(own.isKnown(0, 1), "unknown in both stays unknown");
     }
 }

@@ -31,6 +31,41 @@ class NavigatorTest {
         log.assertNoErrors();
     }
 
+    /**
+     * A doorway two cells wide between struck cells is closed at the Explorer's clearance: the
+     * navigator takes it with the body's half-width and 5 cm rather than give up.
+     */
+    @Test
+    void goTo_throughADoorwayTooNarrowForTheClearance_takesItWithTheNarrowClearance() throws Exception {
+        FakeWorld world = new FakeWorld(8, 6).box(3.5, 0, 4.0, 2.45).box(3.5, 3.05, 4.0, 6);
+        FakeRobot robot = world.robot("r1", 1, 2.75, 0);
+        OccupancyGrid map = new OccupancyGrid(0, 0, 8, 6, 0.25);
+        for (int r = 0; r < map.rows(); r++) {   // the map as mapped: the wall in columns 14-15, rows 10-11 open
+            for (int c = 0; c < map.cols(); c++) {
+                var p = map.centre(c, r);
+                boolean wall = (c == 14 || c == 15) && (r <= 9 || r >= 12);
+                for (int i = 0; i < 3; i++) {
+                    if (wall) {
+                        map.markOccupied(p.x(), p.y());
+                    } else {
+                        map.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        assertTrue(new net.smc.sim.map.PathPlanner(Explorer.CLEARANCE).plan(map, new net.smc.sim.map.Point(1, 2.75),
+                new net.smc.sim.map.Point(7, 2.75), List.of(), 0).isEmpty(), "no way at the full clearance");
+        Navigator nav = new Navigator(robot, map, Explorer.CLEARANCE);
+        EventLog log = new EventLog().watch(nav);
+        nav.start();
+        nav.goTo(7, 2.75);
+        assertTrue(world.runUntil(() -> !nav.isMoving(), 200), "navigator still moving");
+        assertEquals(List.of(), log.of("blocked"));
+        assertEquals(1, log.of("arrived").size(), "arrived events: " + log.lines);
+        assertTrue(robot.x > 6.7, "through the doorway: x " + robot.x);
+        log.assertNoErrors();
+    }
+
     @Test
     void goTo_neverEntersAnAvoidedZonePlusItsMargin() throws Exception {
         FakeWorld world = new FakeWorld(8, 6);
