@@ -16,7 +16,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The planner finds, on any grid, the very path of a plain A* (a {@link PriorityQueue} of
- * {@code [estimate, cell]}, the clearance checked by distance around every occupied cell): its own
+ * {@code [estimate, cell]}, the clearance checked by distance around every occupied cell, a robot
+ * in a closed region leaving it through cells that are not occupied): its own
  * open list and its clearance offsets worked out once must change how fast it plans, not which
  * path it gives, since robots follow that path and a run's timeline depends on it.
  */
@@ -115,12 +116,21 @@ class PathPlannerTest {
             int r = cell / cols;
             for (int dr = -1; dr <= 1; dr++) {
                 for (int dc = -1; dc <= 1; dc++) {
-                    int next = (c + dc) + (r + dr) * cols;
-                    if ((dc == 0 && dr == 0) || !grid.inside(c + dc, r + dr) || closed[next] || done[next]
-                            || (dc != 0 && dr != 0 && (closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols]))) {
+                    if ((dc == 0 && dr == 0) || !grid.inside(c + dc, r + dr)) {
                         continue;
                     }
-                    double step = (dc != 0 && dr != 0 ? Math.sqrt(2) : 1) * (grid.isKnown(c + dc, r + dr) ? 1 : PathPlanner.UNKNOWN_COST);
+                    int next = (c + dc) + (r + dr) * cols;
+                    // From a closed cell (the closed region the robot stands in) any cell not occupied may be entered.
+                    boolean leaving = closed[cell];
+                    boolean blocked = closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr));
+                    boolean cornerCut = dc != 0 && dr != 0 && (leaving
+                            ? grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr)
+                            : closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols]);
+                    if (done[next] || blocked || cornerCut) {
+                        continue;
+                    }
+                    double step = (dc != 0 && dr != 0 ? Math.sqrt(2) : 1) * (grid.isKnown(c + dc, r + dr) ? 1 : PathPlanner.UNKNOWN_COST)
+                            * (closed[next] ? PathPlanner.CLOSED_COST : 1);
                     if (cost[cell] + step < cost[next]) {
                         cost[next] = cost[cell] + step;
                         from[next] = cell;
