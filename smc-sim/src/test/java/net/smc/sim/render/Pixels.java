@@ -19,6 +19,26 @@ public final class Pixels {
                 && Math.abs(a.getBlue() - b.getBlue()) <= tolerance;
     }
 
+    /**
+     * Whether some pixel within {@code radius} pixels (a square) of world point (x, y) is within
+     * {@code tolerance} of {@code colour}: for a mark that a label drawn later may partly cover.
+     */
+    public static boolean nearby(BufferedImage image, Viewport v, double x, double y, int radius, Color colour, int tolerance) {
+        int cx = (int) Math.floor(v.x(x));
+        int cy = (int) Math.floor(v.y(y));
+        for (int dy = -radius; dy <= radius; dy++) {
+            for (int dx = -radius; dx <= radius; dx++) {
+                int px = cx + dx;
+                int py = cy + dy;
+                if (px >= 0 && py >= 0 && px < image.getWidth() && py < image.getHeight()
+                        && near(colour, new Color(image.getRGB(px, py)), tolerance)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     public static String hex(Color c) {
         return String.format("#%06X", c.getRGB() & 0xFFFFFF);
     }
