@@ -28,6 +28,7 @@ import net.smc.policy.lang.Parser;
 import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.SourcePos;
 import net.smc.policy.lang.SyntaxError;
+import net.smc.policy.lang.ParsedUnits;
 import net.smc.policy.lang.Unit;
 
 /**
@@ -46,7 +47,7 @@ public final class CellRuntime {
     public record Config(Consumer<String> output, Consumer<Diagnostic> errors, AuthMode auth, LongSupplier clock,
                          RandomGenerator random, Limits limits, PolicyRepository repository,
                          Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments,
-                         Function<String, Object> xml) {
+                         Function<String, Object> xml, ParsedUnits parsedUnits) {
     }
 
     private final Config config;
@@ -415,11 +416,27 @@ public final class CellRuntime {
             report(new Diagnostic(tooLong.pos(), tooLong.message()));
             return Unit.refused(source, tooLong);
         }
-        Unit unit = Parser.parse(source, text, this::resolveInclude);
+        ParsedUnits shared = config.parsedUnits();
+        if (shared == null) {
+            Unit unit = Parser.parse(source, text, this::resolveInclude);
+            for (SyntaxError e : unit.errors()) {
+                report(new Diagnostic(e.pos(), e.message()));
+            }
+            return unit;
+        }
+        Unit kept = shared.find(source, text);
+        if (kept != null) {
+            return kept;   // parsed without errors or includes: nothing to report
+        }
+        boolean[] included = {false};
+        Unit unit = Parser.parse(source, text, (name, from) -> {
+            included[0] = true;
+            return resolveInclude(name, from);
+        });
         for (SyntaxError e : unit.errors()) {
             report(new Diagnostic(e.pos(), e.message()));
         }
-        return unit;
+        return shared.keep(unit, text, included[0]);
     }
 
     /** The variables of a shell session, kept across its inputs. */
