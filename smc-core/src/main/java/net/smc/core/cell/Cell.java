@@ -33,6 +33,7 @@ import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.api.TeamAddress;
 import net.smc.policy.api.TeamLink;
 import net.smc.policy.RunResult;
+import net.smc.policy.lang.ParsedUnits;
 
 /**
  * One vehicle's self-managed cell, wired: its policy engine, Role-Manager, capability description,
@@ -91,6 +92,7 @@ public final class Cell {
                 .scheduler((delay, task) -> b.scheduler.schedule(delay, task)::cancel)   // timers in the cell's (virtual) time
                 .random(random.split())
                 .repository(b.repository)
+                .parsedUnits(b.parsedUnits)
                 .output(output)
                 .auth(b.auth)
                 .errors(d -> {
@@ -385,6 +387,7 @@ public final class Cell {
         private Clock clock;
         private Scheduler scheduler;
         private PolicyRepository repository;
+        private ParsedUnits parsedUnits;
         private boolean commander;
         private Scheme scheme;
         private Timing timing;
@@ -423,6 +426,16 @@ public final class Cell {
         /** The policy repository: boot policies come from it, and the commander serves the team from it. */
         public Builder repository(PolicyRepository repository) {
             this.repository = Objects.requireNonNull(repository, "repository");
+            return this;
+        }
+
+        /**
+         * Shares the parse of identical small policy units (the boot file, a role's files) with the
+         * other cells of this process built with the same {@link ParsedUnits} (default: none): for
+         * simulations of many cells in one process. The cell still runs every statement itself.
+         */
+        public Builder parsedUnits(ParsedUnits shared) {
+            this.parsedUnits = shared;
             return this;
         }
 

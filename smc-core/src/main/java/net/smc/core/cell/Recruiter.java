@@ -2,9 +2,11 @@ package net.smc.core.cell;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
@@ -46,6 +48,15 @@ final class Recruiter {
     private String deciding;
     /** Whether the policies asked for {@link #deciding}'s full description while deciding. */
     private boolean askedFor;
+
+    /**
+     * How many capability requests for a role may be out beyond its open seats. A manager asks no
+     * more vehicles than it could seat and this margin (for those that turn out taken or unable):
+     * in a large team every free vehicle in reach answers every manager's discovery, and asking
+     * each of them costs both a request and a full description for a seat most will not get. The
+     * others wait in {@link TeamState#deferredAsks} and are asked as requests out end unseated.
+     */
+    static final int ASK_MARGIN = 2;
 
     /** Discovers at once (rate-limited by Supervisor), when a seat offered to a vehicle opens again. */
     private final Runnable rediscover;
@@ -128,6 +139,10 @@ final class Recruiter {
             pending.roles.add(role);
             return;
         }
+        if (asksOut(role) >= openSeats(role) + ASK_MARGIN) {
+            st.deferredAsks.computeIfAbsent(uav, v -> new LinkedHashSet<>()).add(role);
+            return; // enough vehicles asked for this role's open seats: this one waits its turn
+        }
         Optional<Address> to = ctx.address(uav);
         if (to.isEmpty()) {
             return;
@@ -137,12 +152,59 @@ final class Recruiter {
         st.capabilityRequests.put(uav, asked);
         ctx.comm().send(to.get(), new CapabilityRequest(role), TeamContext.failureOnly(() -> {
             if (st.capabilityRequests.remove(uav, asked)) {
-                rediscover.run();
+                lookAgain();
             }
         }));
     }
 
+    private long openSeats(String role) {
+        return st.owned.keySet().stream().filter(s -> s.role().equals(role) && st.open(s)).count();
+    }
+
+    private long asksOut(String role) {
+        return st.capabilityRequests.values().stream().filter(p -> p.roles.contains(role)).count();
+    }
+
+    /** A request out ended without filling a seat: asks the vehicles waiting their turn, else discovers again. */
+    private void lookAgain() {
+        askDeferred();
+        rediscover.run();   // does nothing while requests are out: their ends look again
+    }
+
+    /**
+     * Asks deferred vehicles, oldest first, as far as the margin allows; forgets those that are now
+     * children, already asked, or not heard within the failure timeout, and roles with no open seat.
+     */
+    private void askDeferred() {
+        long now = ctx.clock().nowMillis();
+        for (String uav : List.copyOf(st.deferredAsks.keySet())) {
+            Heard heard = st.heard.get(uav);
+            if (heard == null || now - heard.atMillis() > ctx.timing().failureTimeoutMillis()
+                    || st.children.containsKey(uav) || st.capabilityRequests.containsKey(uav)) {
+                st.deferredAsks.remove(uav);
+                continue;
+            }
+            Set<String> roles = st.deferredAsks.get(uav);
+            for (String role : List.copyOf(roles)) {
+                if (openSeats(role) == 0) {
+                    roles.remove(role);
+                } else if (asksOut(role) < openSeats(role) + ASK_MARGIN) {
+                    roles.remove(role);
+                    requestFullCapability(uav, role);
+                }
+            }
+            if (roles.isEmpty()) {
+                st.deferredAsks.remove(uav);
+            }
+        }
+    }
+
     void onCapabilityReply(Envelope env, CapabilityReply r) {
+        settleCapabilityReply(env, r);
+        askDeferred();   // a seat given or not, the requests out for its role are one fewer
+    }
+
+    private void settleCapabilityReply(Envelope env, CapabilityReply r) {
         PendingCapability pending = st.capabilityRequests.remove(env.sender());
         if (pending == null || st.recruitingHeld) {
             return;
@@ -276,7 +338,7 @@ final class Recruiter {
         if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
             // The vehicle declined a capability request: it took a seat from another manager since it
             // answered discovery. The request no longer holds rediscovery back; look again now.
-            rediscover.run();
+            lookAgain();
             return;
         }
         if (seat.isEmpty()) {
@@ -352,7 +414,7 @@ final class Recruiter {
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
         // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
         // say), not at the next tick.
-        rediscover.run();
+        lookAgain();
     }
 
     void onPolicyRequest(Envelope env, PolicyRequest r) {

@@ -50,6 +50,7 @@ final class Seating {
         st.children.clear();
         st.owned.clear();
         st.capabilityRequests.clear();
+        st.deferredAsks.clear();
         for (Seat s : List.copyOf(st.seats)) {
             ctx.host().withdrawRole(s.role());
             ctx.emit(CellEvent.Kind.RELEASED, s + ": " + why);

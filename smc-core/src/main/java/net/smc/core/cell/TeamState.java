@@ -2,6 +2,7 @@ package net.smc.core.cell;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -68,6 +69,12 @@ final class TeamState {
     final Map<String, Child> children = new TreeMap<>();
     final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
     final Map<String, Heard> heard = new HashMap<>();
+    /**
+     * Vehicles the policies wanted asked for their full description, by the roles they were wanted
+     * for, while as many requests for those roles were out as the role has open seats and a margin
+     * (Recruiter): asked, oldest first, when a request out ends without filling a seat.
+     */
+    final Map<String, Set<String>> deferredAsks = new LinkedHashMap<>();
     /**
      * Children's requests for policy files of this cell's subtree that are still on their way to it
      * (it fetches them after taking its role), by URI: answered when the file arrives (Recruiter).

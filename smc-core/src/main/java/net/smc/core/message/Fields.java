@@ -16,6 +16,18 @@ final class Fields {
         return string(field, value, 1, WireFormat.MAX_NAME, "a name");
     }
 
+    /**
+     * Whether {@code value} is a name by {@link #name}'s rule: callers on a hot path check with it
+     * first and build the field's path for {@link #name}'s message only when the rule is broken.
+     */
+    static boolean isName(String value) {
+        if (value == null) {
+            return false;
+        }
+        int bytes = Utf8.length(value);
+        return bytes >= 1 && bytes <= WireFormat.MAX_NAME;
+    }
+
     /** A policy URI: 1 to {@link WireFormat#MAX_URI} UTF-8 bytes. */
     static String uri(String field, String value) {
         return string(field, value, 1, WireFormat.MAX_URI, "a URI");

@@ -166,6 +166,35 @@ class MessageValidationTest {
     }
 
     @Test
+    void capabilityReply_namesTheDeepFieldThatBreaksARule() {
+        String long65 = "x".repeat(65);
+        var op = new net.smc.core.capability.OperationDescription("go", List.of("int", long65));
+        var attribute = new net.smc.core.capability.EventDescription.Attribute("at", "");
+        var event = new net.smc.core.capability.EventDescription("done", List.of(attribute));
+        var withBadArgument = new net.smc.core.capability.TaskDescription("move", List.of(op), List.of());
+        var withBadAttribute = new net.smc.core.capability.TaskDescription("move", List.of(), List.of(event));
+        var good = net.smc.core.capability.TaskDescription.empty("idle");
+        assertEquals("CapabilityReply.description.tasks[1].operations[0].argumentTypes[1] '" + "x".repeat(40)
+                        + "...' is 65 UTF-8 bytes; a name must be 1 to 64 bytes",
+                refusal(() -> new CapabilityReply(1, net.smc.core.capability.CapabilityDescription.of("uav1",
+                        java.util.Set.of(), List.of(good, withBadArgument)))));
+        assertEquals("CapabilityReply.description.tasks[0].events[0].attributes[0].type '' is 0 UTF-8 bytes; a name must be 1 to 64 bytes",
+                refusal(() -> new CapabilityReply(1, net.smc.core.capability.CapabilityDescription.of("uav1",
+                        java.util.Set.of(), List.of(withBadAttribute)))));
+        assertEquals("CapabilityReply.description.resources[1] '" + "x".repeat(40)
+                        + "...' is 65 UTF-8 bytes; a name must be 1 to 64 bytes",
+                refusal(() -> new CapabilityReply(1, net.smc.core.capability.CapabilityDescription.of("uav1",
+                        java.util.Set.of("a", long65), List.of(good)))));
+    }
+
+    @Test
+    void discoveryReply_refusesAnOverlongVehicleName() {
+        assertEquals("DiscoveryReply.summary.vehicle '" + "v".repeat(40) + "...' is 65 UTF-8 bytes; a name must be 1 to 64 bytes",
+                refusal(() -> new DiscoveryReply(1, "m", new CapabilitySummary("v".repeat(65),
+                        new java.util.TreeSet<>(), new java.util.TreeSet<>()))));
+    }
+
+    @Test
     void status_refusesANegativeTeamSize() {
         assertEquals("Status.teamSize is -1; it must be 0 or more",
                 refusal(() -> new Status("m", new Identity("m", 0, 0), "uav1", 0, -1)));

@@ -8,19 +8,32 @@ import java.util.function.Consumer;
  * A checked unit: its name, its syntax errors (which stop it from running), and what it needs to
  * give its statements again, in order, to be run: its text and the files its includes gave. It
  * does not hold its syntax tree, so a large unit costs its text, not a tree many times larger; its
- * statements are parsed again, one at a time, by {@link #forEachStatement}. Immutable.
+ * statements are parsed again, one at a time, by {@link #forEachStatement}. Immutable. (A small unit
+ * that cells of one process share can keep its tree instead: {@link ParsedUnits}.)
  */
 public final class Unit {
     private final String source;
     private final String text;
     private final IncludeResolver includes;
     private final List<SyntaxError> errors;
+    /** The statements, for a unit kept parsed by {@link ParsedUnits}; null when they are parsed from the text. */
+    private final List<Node> tree;
 
     Unit(String source, String text, IncludeResolver includes, List<SyntaxError> errors) {
         this.source = source;
         this.text = text;
         this.includes = includes;
         this.errors = List.copyOf(errors);
+        this.tree = null;
+    }
+
+    /** A unit without errors that keeps its statements' trees ({@link ParsedUnits}). */
+    Unit(String source, List<Node> statements) {
+        this.source = source;
+        this.text = null;
+        this.includes = IncludeResolver.NONE;
+        this.errors = List.of();
+        this.tree = List.copyOf(statements);
     }
 
     /** A unit refused before it was parsed (too long, say): {@code error} is its only error, it has no statements. */
@@ -46,6 +59,10 @@ public final class Unit {
      * {@code action} throws ends the walk and passes through.
      */
     public void forEachStatement(Consumer<Node> action) {
+        if (tree != null) {
+            tree.forEach(action);
+            return;
+        }
         Parser.parse(source, text, includes, action);
     }
 

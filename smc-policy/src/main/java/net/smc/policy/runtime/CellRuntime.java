@@ -18,7 +18,7 @@ import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.api.TeamLink;
 import net.smc.policy.api.TimerScheduler;
 import net.smc.policy.lang.IncludeResolver;
-import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.ParsedUnits;
 import net.smc.policy.lang.SourcePos;
 import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
@@ -39,7 +39,7 @@ public final class CellRuntime {
     public record Config(Consumer<String> output, Consumer<Diagnostic> errors, AuthMode auth, LongSupplier clock,
                          RandomGenerator random, Limits limits, PolicyRepository repository,
                          Map<String, Class<?>> classes, TimerScheduler scheduler, List<String> arguments,
-                         Function<String, Object> xml) {
+                         Function<String, Object> xml, ParsedUnits parsedUnits) {
     }
 
     private final Config config;
@@ -375,11 +375,7 @@ public final class CellRuntime {
             report(new Diagnostic(tooLong.pos(), tooLong.message()));
             return Unit.refused(source, tooLong);
         }
-        Unit unit = Parser.parse(source, text, files::resolveInclude);
-        for (SyntaxError e : unit.errors()) {
-            report(new Diagnostic(e.pos(), e.message()));
-        }
-        return unit;
+        return files.parse(source, text, config.parsedUnits(), e -> report(new Diagnostic(e.pos(), e.message())));
     }
 
     /** The variables of a shell session, kept across its inputs. */

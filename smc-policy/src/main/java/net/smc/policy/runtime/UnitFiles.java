@@ -7,10 +7,15 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Consumer;
 
 import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.api.PonderError;
 import net.smc.policy.lang.IncludeResolver;
+import net.smc.policy.lang.ParsedUnits;
+import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.SyntaxError;
+import net.smc.policy.lang.Unit;
 import net.smc.policy.lang.SourceFiles;
 
 /**
@@ -79,6 +84,27 @@ final class UnitFiles {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /**
+     * Parses a unit's text, its includes resolved by {@link #resolveInclude}, and reports each
+     * syntax error. With {@code shared} (the parses the cells of one process share; null: none), a
+     * unit that parsed before from the same text without errors or includes is taken from it.
+     */
+    Unit parse(String source, String text, ParsedUnits shared, Consumer<SyntaxError> report) {
+        if (shared != null) {
+            Unit kept = shared.find(source, text);
+            if (kept != null) {
+                return kept;   // parsed without errors or includes: nothing to report
+            }
+        }
+        boolean[] included = {false};
+        Unit unit = Parser.parse(source, text, (name, from) -> {
+            included[0] = true;
+            return resolveInclude(name, from);
+        });
+        unit.errors().forEach(report);
+        return shared == null ? unit : shared.keep(unit, text, included[0]);
     }
 
     /** An include's file for the parser, whose resolver reports problems as I/O errors. */

@@ -30,6 +30,7 @@ import net.smc.core.transport.sim.InMemoryNetwork;
 import net.smc.core.transport.sim.LinkProfile;
 import net.smc.core.transport.sim.SimulationScheduler;
 import net.smc.policy.api.PolicyRepository;
+import net.smc.policy.lang.ParsedUnits;
 import net.smc.sim.task.TaskCatalog;
 import net.smc.sim.world.SimWorld;
 
@@ -92,6 +93,11 @@ public final class TeamSimulation implements CellTeam {
     private final List<Set<String>> partition = new ArrayList<>();
     private final Adversary adversary;
     private final WorldTeam world;
+    /**
+     * The parse of the boot file and of each role's files, shared by the team's cells (each still
+     * runs them): a team of 1,000 would otherwise parse the same texts thousands of times.
+     */
+    private final ParsedUnits parsedUnits = new ParsedUnits(1_024, 16_384);
     private final BiConsumer<String, String> output;
     private int nextPort = 5000;
     private long restarts;
@@ -204,7 +210,7 @@ public final class TeamSimulation implements CellTeam {
         Cell.Builder b = Cell.builder(n.spec.id(), mission, description)
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
-                .trace(this::record).tasks(provider)
+                .trace(this::record).tasks(provider).parsedUnits(parsedUnits)
                 .output(line -> output.accept(n.spec.id(), line)).auth(auth);
         if (scheme != null) {
             b.scheme(scheme);
