@@ -4,10 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.security.GeneralSecurityException;
 import java.security.KeyPair;
 import java.security.KeyPairGenerator;
-import java.security.SecureRandom;
 import java.security.spec.NamedParameterSpec;
 import java.util.Arrays;
 import java.util.HexFormat;
@@ -22,15 +20,15 @@ class EphemeralTest {
     @Test
     void bothSidesAgreeOnTheSecretTheJdkComputes() throws Exception {
         for (int i = 0; i < 10; i++) {
-            Ephemeral ours = Ephemeral.generate(seeded(new byte[] {(byte) i}));
+            Ephemeral ours = Ephemeral.generate(SigningKeyTest.seeded(new byte[] {(byte) i}));
             KeyPairGenerator generator = KeyPairGenerator.getInstance("X25519");
-            generator.initialize(NamedParameterSpec.X25519, seeded(new byte[] {(byte) i}));
+            generator.initialize(NamedParameterSpec.X25519, SigningKeyTest.seeded(new byte[] {(byte) i}));
             KeyPair jdkSameSeed = generator.generateKeyPair();
             byte[] encoded = jdkSameSeed.getPublic().getEncoded();
             assertArrayEquals(Arrays.copyOfRange(encoded, encoded.length - 32, encoded.length), ours.publicBytes(),
                     "the same random source gives the JDK's public value " + i);
 
-            Ephemeral peer = Ephemeral.generate(seeded(new byte[] {(byte) i, 1}));
+            Ephemeral peer = Ephemeral.generate(SigningKeyTest.seeded(new byte[] {(byte) i, 1}));
             byte[] secret = ours.agree(peer.publicBytes());
             assertArrayEquals(secret, peer.agree(ours.publicBytes()));
 
@@ -46,22 +44,12 @@ class EphemeralTest {
 
     @Test
     void aPointOfSmallOrderOrAShortValueIsRefused() {
-        Ephemeral ours = Ephemeral.generate(seeded(new byte[] {9}));
+        Ephemeral ours = Ephemeral.generate(SigningKeyTest.seeded(new byte[] {9}));
         Malformed zero = assertThrows(Malformed.class, () -> ours.agree(new byte[32]));
         assertTrue(zero.getMessage().contains("small order"), zero.getMessage());
         byte[] one = new byte[32];
         one[0] = 1;
         assertThrows(Malformed.class, () -> ours.agree(one));
         assertThrows(Malformed.class, () -> ours.agree(new byte[31]));
-    }
-
-    private static SecureRandom seeded(byte[] seed) {
-        try {
-            SecureRandom random = SecureRandom.getInstance("SHA1PRNG");
-            random.setSeed(seed);
-            return random;
-        } catch (GeneralSecurityException e) {
-            throw new IllegalStateException(e);
-        }
     }
 }

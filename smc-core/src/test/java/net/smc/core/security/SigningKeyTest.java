@@ -120,7 +120,8 @@ class SigningKeyTest {
         assertThrows(IllegalArgumentException.class, () -> VerificationKey.of(new byte[33]));
     }
 
-    private static SecureRandom seeded(byte[] seed) {
+    /** A SHA1PRNG seeded with {@code seed} alone: the same bytes on every run (also for {@code EphemeralTest}). */
+    static SecureRandom seeded(byte[] seed) {
         try {
             SecureRandom random = SecureRandom.getInstance("SHA1PRNG");
             random.setSeed(seed);
