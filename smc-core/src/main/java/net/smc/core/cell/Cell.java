@@ -3,14 +3,12 @@ package net.smc.core.cell;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import java.util.Optional;
 import java.util.SplittableRandom;
 import java.util.function.Consumer;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.comm.CommunicationManager;
-import net.smc.core.comm.SenderSettings;
 import net.smc.core.discovery.DiscoveryObject;
 import net.smc.core.message.CellRequest;
 import net.smc.core.message.Identity;
@@ -29,11 +27,9 @@ import net.smc.core.transport.Clock;
 import net.smc.core.transport.Scheduler;
 import net.smc.core.transport.Transport;
 import net.smc.policy.api.Diagnostic;
-import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.api.TeamAddress;
 import net.smc.policy.api.TeamLink;
 import net.smc.policy.RunResult;
-import net.smc.policy.lang.ParsedUnits;
 
 /**
  * One vehicle's self-managed cell, wired: its policy engine, Role-Manager, capability description,
@@ -76,7 +72,7 @@ public final class Cell {
     private final VehicleRoles vehicleRoles;
     private boolean started;
 
-    private Cell(Builder b) {
+    Cell(CellBuilder b) {
         this.vehicle = b.vehicle;
         this.mission = b.mission;
         this.commanding = b.commander;
@@ -208,8 +204,8 @@ public final class Cell {
     }
 
     /** A builder for vehicle {@code vehicle} of {@code mission}, describing itself as {@code description}. */
-    public static Builder builder(String vehicle, Mission mission, CapabilityDescription description) {
-        return new Builder(vehicle, mission, description);
+    public static CellBuilder builder(String vehicle, Mission mission, CapabilityDescription description) {
+        return new CellBuilder(vehicle, mission, description);
     }
 
     /** Starts receiving and ticking; the acting commander starts forming its team. */
@@ -376,137 +372,5 @@ public final class Cell {
         }
         return credential instanceof Credential c && c.vehicleId().equals(uav)
                 && (c.mission() == null || c.mission().isEmpty() || c.mission().equals(mission.instanceName()));
-    }
-
-    /** Collects what a {@link Cell} needs; transport, clock and scheduler are required. */
-    public static final class Builder {
-        private final String vehicle;
-        private final Mission mission;
-        private final CapabilityDescription description;
-        private Transport transport;
-        private Clock clock;
-        private Scheduler scheduler;
-        private PolicyRepository repository;
-        private ParsedUnits parsedUnits;
-        private boolean commander;
-        private Scheme scheme;
-        private Timing timing;
-        private long seed;
-        private Consumer<CellEvent> trace = e -> { };
-        private Consumer<String> output = line -> { };
-        private SenderSettings senderSettings;
-        private TaskProvider tasks = TaskProvider.NONE;
-        private AuthMode auth = AuthMode.OFF;
-
-        private Builder(String vehicle, Mission mission, CapabilityDescription description) {
-            this.vehicle = Objects.requireNonNull(vehicle, "vehicle");
-            this.mission = Objects.requireNonNull(mission, "mission");
-            this.description = Objects.requireNonNull(description, "description");
-            if (!description.vehicle().equals(vehicle)) {
-                throw new IllegalArgumentException("capability description of '" + description.vehicle()
-                        + "' given to cell '" + vehicle + "'; a cell describes its own vehicle");
-            }
-        }
-
-        public Builder transport(Transport transport) {
-            this.transport = Objects.requireNonNull(transport, "transport");
-            return this;
-        }
-
-        public Builder clock(Clock clock) {
-            this.clock = Objects.requireNonNull(clock, "clock");
-            return this;
-        }
-
-        public Builder scheduler(Scheduler scheduler) {
-            this.scheduler = Objects.requireNonNull(scheduler, "scheduler");
-            return this;
-        }
-
-        /** The policy repository: boot policies come from it, and the commander serves the team from it. */
-        public Builder repository(PolicyRepository repository) {
-            this.repository = Objects.requireNonNull(repository, "repository");
-            return this;
-        }
-
-        /**
-         * Shares the parse of identical small policy units (the boot file, a role's files) with the
-         * other cells of this process built with the same {@link ParsedUnits} (default: none): for
-         * simulations of many cells in one process. The cell still runs every statement itself.
-         */
-        public Builder parsedUnits(ParsedUnits shared) {
-            this.parsedUnits = shared;
-            return this;
-        }
-
-        /** Whether this vehicle is the acting commander from the start. */
-        public Builder commander(boolean commander) {
-            this.commander = commander;
-            return this;
-        }
-
-        /** Overrides the mission's {@code scheme} parameter (distributed by default). */
-        public Builder scheme(Scheme scheme) {
-            this.scheme = Objects.requireNonNull(scheme, "scheme");
-            return this;
-        }
-
-        /** Overrides the timing the mission's parameters give. */
-        public Builder timing(Timing timing) {
-            this.timing = Objects.requireNonNull(timing, "timing");
-            return this;
-        }
-
-        /** Seeds the cell's random choices (tick phase, retransmission jitter, the engine's random). */
-        public Builder seed(long seed) {
-            this.seed = seed;
-            return this;
-        }
-
-        /** Receives every decision of the team protocols. */
-        public Builder trace(Consumer<CellEvent> trace) {
-            this.trace = Objects.requireNonNull(trace, "trace");
-            return this;
-        }
-
-        /** Receives what policies print ({@code root print:}); discarded by default. */
-        public Builder output(Consumer<String> output) {
-            this.output = Objects.requireNonNull(output, "output");
-            return this;
-        }
-
-        /** Overrides the retransmission settings the timing gives ({@link Timing#senderSettings()}). */
-        public Builder senderSettings(SenderSettings settings) {
-            this.senderSettings = Objects.requireNonNull(settings, "settings");
-            return this;
-        }
-
-        /**
-         * The vehicle's tasks: a role it is assigned starts those its mission requires (bound at
-         * {@code root/task/<name>}), and withdrawing the role stops them. Default
-         * {@link TaskProvider#NONE}: roles load without tasks.
-         */
-        public Builder tasks(TaskProvider tasks) {
-            this.tasks = Objects.requireNonNull(tasks, "tasks");
-            return this;
-        }
-
-        /**
-         * Whether the engine checks authorisation policies, and its default decision (default
-         * {@link AuthMode#OFF}: nothing checked). With {@link AuthMode#DENY}, as deployed, a remote
-         * role's event or invocation runs only when the receiving role's authorisations allow it.
-         */
-        public Builder auth(AuthMode mode) {
-            this.auth = Objects.requireNonNull(mode, "auth");
-            return this;
-        }
-
-        public Cell build() {
-            if (transport == null || clock == null || scheduler == null || repository == null) {
-                throw new IllegalStateException("cell '" + vehicle + "' needs a transport, a clock, a scheduler and a"
-                        + " policy repository");
-            }
-            return new Cell(this);
-        }
     }
 }

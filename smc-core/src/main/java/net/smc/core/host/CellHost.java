@@ -4,6 +4,7 @@ import net.smc.core.cell.Scheme;
 import net.smc.core.cell.CellView;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Cell;
+import net.smc.core.cell.CellBuilder;
 import java.io.IOException;
 import java.util.Objects;
 import java.util.concurrent.Callable;
@@ -92,7 +93,7 @@ public final class CellHost implements AutoCloseable {
                     Scheduler.checkDelay(delayMillis);
                     return realTime.schedule(Math.round(delayMillis / rate), task);
                 };
-        Cell.Builder b = Cell.builder(s.vehicle, s.mission, s.description).transport(transport).clock(clock)
+        CellBuilder b = Cell.builder(s.vehicle, s.mission, s.description).transport(transport).clock(clock)
                 .scheduler(scheduler).repository(s.repository).commander(s.commander)
                 .seed(s.seed).trace(s.trace).output(s.output).tasks(s.tasks).auth(s.auth);
         if (s.scheme != null) {
@@ -275,13 +276,13 @@ public final class CellHost implements AutoCloseable {
             return this;
         }
 
-        /** The vehicle's tasks (default none): see {@code Cell.Builder#tasks}. */
+        /** The vehicle's tasks (default none): see {@code CellBuilder#tasks}. */
         public Settings tasks(TaskProvider tasks) {
             this.tasks = Objects.requireNonNull(tasks, "tasks");
             return this;
         }
 
-        /** The cell's authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
+        /** The cell's authorisation mode (default OFF; DENY as deployed): see {@code CellBuilder#auth}. */
         public Settings auth(AuthMode mode) {
             this.auth = Objects.requireNonNull(mode, "auth");
             return this;

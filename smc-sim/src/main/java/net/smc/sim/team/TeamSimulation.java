@@ -15,6 +15,7 @@ import java.util.function.Consumer;
 import java.util.function.Function;
 
 import net.smc.core.cell.Cell;
+import net.smc.core.cell.CellBuilder;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
 import net.smc.core.capability.CapabilityDescription;
@@ -207,7 +208,7 @@ public final class TeamSimulation implements CellTeam {
         TaskProvider provider = world != null && world.placed(n.spec.id()) ? world.tasks(n.spec.id()) : tasks.apply(n.spec.id());
         CapabilityDescription description = world != null && world.placed(n.spec.id())
                 ? world.describe(n.spec) : n.spec.description();
-        Cell.Builder b = Cell.builder(n.spec.id(), mission, description)
+        CellBuilder b = Cell.builder(n.spec.id(), mission, description)
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
                 .trace(this::record).tasks(provider).parsedUnits(parsedUnits)

@@ -165,7 +165,7 @@ public final class TeamSimulationBuilder {
         return this;
     }
 
-    /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code Cell.Builder#auth}. */
+    /** The cells' authorisation mode (default OFF; DENY as deployed): see {@code CellBuilder#auth}. */
     public TeamSimulationBuilder auth(net.smc.policy.api.AuthMode mode) {
         this.auth = Objects.requireNonNull(mode, "auth");
         return this;
