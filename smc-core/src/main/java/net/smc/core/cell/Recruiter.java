@@ -186,9 +186,10 @@ final class Recruiter {
             }
             Set<String> roles = st.deferredAsks.get(uav);
             for (String role : List.copyOf(roles)) {
-                if (openSeats(role) == 0) {
+                long open = openSeats(role);
+                if (open == 0) {
                     roles.remove(role);
-                } else if (asksOut(role) < openSeats(role) + ASK_MARGIN) {
+                } else if (asksOut(role) < open + ASK_MARGIN) {
                     roles.remove(role);
                     requestFullCapability(uav, role);
                 }

@@ -95,7 +95,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         this.map = java.util.Objects.requireNonNull(map, "map");
         this.struck = new boolean[map.cols() * map.rows()];
         this.planner = new PathPlanner(CLEARANCE);
-        this.narrow = new PathPlanner(hardware.drive().wheelBase() / 2 + 0.05);
+        this.narrow = new PathPlanner(narrowClearance());
         this.current = planner;
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
     }

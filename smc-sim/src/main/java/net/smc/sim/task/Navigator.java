@@ -53,7 +53,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
         this.planner = new PathPlanner(clearance);
-        this.narrow = new PathPlanner(Math.min(clearance, hardware.drive().wheelBase() / 2 + 0.05));
+        this.narrow = new PathPlanner(Math.min(clearance, narrowClearance()));
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
     }
 

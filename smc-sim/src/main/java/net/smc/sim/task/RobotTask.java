@@ -15,6 +15,14 @@ public abstract class RobotTask extends Task {
         this.hardware = Objects.requireNonNull(hardware, "hardware");
     }
 
+    /**
+     * The least clearance a path may keep from an occupied cell's centre: the body's half-width
+     * and 5 cm, for when no path keeps the task's own (a doorway narrowed on the map by its jambs).
+     */
+    final double narrowClearance() {
+        return hardware.drive().wheelBase() / 2 + 0.05;
+    }
+
     @Override
     protected void onStart() {
         hardware.control(this, this::step);
