@@ -10,6 +10,14 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.FutureTask;
+import java.util.concurrent.RunnableFuture;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import net.smc.core.cell.Scheme;
 import net.smc.core.mission.Mission;
@@ -98,6 +106,12 @@ final class SetupTimeCommand implements Callable<Integer> {
             description = "The project's policy repository, for boot/events.p2 (default: ${DEFAULT-VALUE}).")
     Path policies;
 
+    @Option(names = "--jobs", paramLabel = "J",
+            description = {"Simulated runs of a point run on J threads at once (default: one per processor). Each "
+                    + "run is a seeded simulation with its own clock and charged CPU, so the results do not depend on J; "
+                    + "runs over UDP, timed on the wall clock, always run one at a time."})
+    Integer jobs;
+
     @Option(names = "--verbose", description = {"After each simulated run, a report on standard output: when the roles "
             + "of each level of the tree started, the busiest cell's charged CPU by category and the datagrams it "
             + "received by kind, and the team's datagrams and bytes by kind."})
@@ -143,6 +157,7 @@ final class SetupTimeCommand implements Callable<Integer> {
             io.stderr().flush();
             costs = Calibration.measure(boot, MissionGenerator.write(TreeShape.of(20, 4), work.resolve("calibration"), boot));
         }
+        CpuCosts charged = costs;
         RadioNetwork radio = RadioNetwork.ADHOC_80211;
         if (sim) {
             costs.save(dir.resolve("costs.properties"));
@@ -154,6 +169,8 @@ final class SetupTimeCommand implements Callable<Integer> {
         List<SetupResult> results = new ArrayList<>();
         int total = shapes.size() * schemeList.size() * transports.size() * runs;
         long t0 = System.nanoTime();
+        int threads = jobs == null ? Runtime.getRuntime().availableProcessors() : jobs;
+        ExecutorService pool = Executors.newFixedThreadPool(Math.min(threads, runs), runner());
         try (Writer csv = Files.newBufferedWriter(dir.resolve("setup-time.csv"))) {
             SetupTimeCsv.writeHeader(csv);
             for (TreeShape shape : shapes.values()) {
@@ -163,21 +180,39 @@ final class SetupTimeCommand implements Callable<Integer> {
                     Mission mission = loader.load(g.instanceFile(scheme));
                     for (String transport : transports) {
                         long pointStart = System.nanoTime();
+                        progress(results.size(), total, shape.roles(), scheme, t0);
+                        // Over UDP a run is timed on the wall clock, so it runs alone, on this thread.
+                        boolean alone = transport.equals("udp");
+                        List<RunnableFuture<SimulatedRun>> point = new ArrayList<>();
                         for (int run = 1; run <= runs; run++) {
-                            progress(results.size(), total, shape.roles(), scheme, t0);
                             int r0 = run;
-                            SetupResult r = transport.equals("udp")
-                                    ? UdpSetupTimeRun.run(g, mission, scheme, run, seed + run, limitMillis)
-                                    : SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis,
-                                            report -> verbose(shape.roles(), scheme, r0, report));
-                            results.add(r);
-                            SetupTimeCsv.writeRow(csv, r);
+                            Callable<SimulatedRun> task = alone
+                                    ? () -> new SimulatedRun(UdpSetupTimeRun.run(g, mission, scheme, r0, seed + r0,
+                                            limitMillis), "")
+                                    : () -> simulate(g, mission, scheme, r0, radio, charged);
+                            RunnableFuture<SimulatedRun> f = new FutureTask<>(task);
+                            if (!alone) {
+                                pool.execute(f);
+                            }
+                            point.add(f);
+                        }
+                        for (RunnableFuture<SimulatedRun> f : point) {
+                            if (alone) {
+                                f.run();
+                            }
+                            SimulatedRun r = outcome(f);
+                            verbose(shape.roles(), scheme, r.result().run(), r.report());
+                            results.add(r.result());
+                            SetupTimeCsv.writeRow(csv, r.result());
                             csv.flush();
+                            progress(results.size(), total, shape.roles(), scheme, t0);
                         }
                         summary(results, shape.roles(), scheme, transport, (System.nanoTime() - pointStart) / 1e9);
                     }
                 }
             }
+        } finally {
+            pool.shutdownNow();
         }
         progress(results.size(), total, 0, null, t0);
         io.stderr().println();
@@ -186,6 +221,40 @@ final class SetupTimeCommand implements Callable<Integer> {
         io.stdout().println("wrote " + dir.resolve("setup-time.csv") + " and " + dir.resolve("setup-time.png"));
         io.stdout().flush();
         return 0;
+    }
+
+    /** A run's result and its diagnostic report (empty over UDP). */
+    private record SimulatedRun(SetupResult result, String report) {
+    }
+
+    private SimulatedRun simulate(GeneratedMission g, Mission mission, Scheme scheme, int run, RadioNetwork radio,
+                                  CpuCosts costs) {
+        String[] report = {""};
+        SetupResult r = SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis,
+                text -> report[0] = text);
+        return new SimulatedRun(r, report[0]);
+    }
+
+    /** The run's outcome; a run that threw rethrows here, on the command's thread. */
+    private static SimulatedRun outcome(Future<SimulatedRun> f) throws Exception {
+        try {
+            return f.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof Exception cause) {
+                throw cause;
+            }
+            throw e;
+        }
+    }
+
+    /** Daemon threads, so a failing command never waits for the runs still going. */
+    private static ThreadFactory runner() {
+        AtomicInteger n = new AtomicInteger();
+        return r -> {
+            Thread t = new Thread(r, "setup-time-run-" + n.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        };
     }
 
     private void verbose(int roles, Scheme scheme, int run, String report) {
@@ -213,6 +282,9 @@ final class SetupTimeCommand implements Callable<Integer> {
     private void checkArguments() {
         if (runs < 1) {
             throw new ParameterException(spec.commandLine(), "--runs " + runs + ": it must be 1 or more");
+        }
+        if (jobs != null && jobs < 1) {
+            throw new ParameterException(spec.commandLine(), "--jobs " + jobs + ": it must be 1 or more");
         }
         if (roles.isEmpty()) {
             throw new ParameterException(spec.commandLine(), "--roles: give at least one number of roles");

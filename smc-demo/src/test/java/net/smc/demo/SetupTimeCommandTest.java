@@ -71,6 +71,43 @@ class SetupTimeCommandTest {
     }
 
     @Test
+    void runsOnSeveralThreads_writeTheSameRowsAsOneAtATime() throws Exception {
+        Path given = costs();
+        String[] common = {"experiment", "setup-time", "--roles", "5,20", "--runs", "4", "--seed", "11",
+                "--costs", given.toString(), "--policies", policies().toString(), "--verbose"};
+        Smc.Result one = Smc.in(dir).run(concat(common, "--jobs", "1", "--out", "one"));
+        Smc.Result three = Smc.in(dir).run(concat(common, "--jobs", "3", "--out", "three"));
+        assertEquals(0, one.status(), one.err());
+        assertEquals(0, three.status(), three.err());
+        List<String> rows = Files.readAllLines(dir.resolve("one/setup-time.csv"));
+        assertEquals(1 + 2 * 2 * 4, rows.size(), String.join("\n", rows));
+        assertEquals(rows, Files.readAllLines(dir.resolve("three/setup-time.csv")));
+        // The reports come in run order, whole, whatever thread ran them.
+        assertEquals(runReports(one.out()), runReports(three.out()));
+        assertTrue(three.out().indexOf("20 roles centralised run 4:") > three.out().indexOf("20 roles centralised run 3:"),
+                three.out());
+    }
+
+    /** The verbose reports of the runs, without the summary lines (wall times) and the output folder's name. */
+    private static String runReports(String out) {
+        return out.lines().filter(l -> !l.contains(" s wall)") && !l.startsWith("wrote "))
+                .reduce("", (a, b) -> a + b + "\n");
+    }
+
+    private static String[] concat(String[] a, String... b) {
+        String[] all = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
+    }
+
+    @Test
+    void zeroJobs_isAUsageError() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--jobs", "0", "--out", "o");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--jobs 0: it must be 1 or more"), r.err());
+    }
+
+    @Test
     void unknownScheme_isAUsageError() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--schemes", "anarchic", "--out", "o");
         assertEquals(2, r.status());
