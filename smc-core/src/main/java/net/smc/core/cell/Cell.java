@@ -107,7 +107,7 @@ public final class Cell {
         }
         MessageRouter router = new MessageRouter();
         this.comm = CommunicationManager.builder(vehicle, b.transport, b.clock, b.scheduler)
-                .random(random.split()).router(router)
+                .random(random.split()).router(router).sharedDecodes(b.sharedDecodes)
                 .settings(b.senderSettings != null ? b.senderSettings : timing.senderSettings()).build();
         AuthenticatingTransport auth = b.transport instanceof AuthenticatingTransport a ? a : null;
         TeamProtocol.Host host = new TeamProtocol.Host() {

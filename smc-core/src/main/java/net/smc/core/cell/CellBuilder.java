@@ -5,6 +5,7 @@ import java.util.function.Consumer;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.comm.SenderSettings;
+import net.smc.core.message.SharedDecodes;
 import net.smc.core.mission.Mission;
 import net.smc.core.role.TaskProvider;
 import net.smc.core.transport.Clock;
@@ -24,6 +25,7 @@ public final class CellBuilder {
     Scheduler scheduler;
     PolicyRepository repository;
     ParsedUnits parsedUnits;
+    SharedDecodes sharedDecodes;
     boolean commander;
     Scheme scheme;
     Timing timing;
@@ -72,6 +74,16 @@ public final class CellBuilder {
      */
     public CellBuilder parsedUnits(ParsedUnits shared) {
         this.parsedUnits = shared;
+        return this;
+    }
+
+    /**
+     * Shares the decodes of broadcast datagrams with the other cells of this process built with the
+     * same {@link SharedDecodes} (default: none): for simulations of many cells in one process, where
+     * every cell receives each discovery broadcast.
+     */
+    public CellBuilder sharedDecodes(SharedDecodes shared) {
+        this.sharedDecodes = shared;
         return this;
     }
 

@@ -14,6 +14,7 @@ import net.smc.core.message.Acks;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Message;
 import net.smc.core.message.ReassemblySettings;
+import net.smc.core.message.SharedDecodes;
 import net.smc.core.router.MessageRouter;
 import net.smc.core.security.AuthenticatingTransport;
 import net.smc.core.transport.Address;
@@ -78,7 +79,7 @@ public final class CommunicationManager {
         this.router = b.router;
         this.critical = b.critical;
         this.defaultListener = b.listener;
-        this.wire = new Wire(b.transport, b.clock, b.reassembly, counters);
+        this.wire = new Wire(b.transport, b.clock, b.reassembly, counters, b.sharedDecodes);
         this.ids = new IdSource(b.clock);
         this.sender = new MessageSender(b.vehicleId, b.clock, b.scheduler, b.random, b.settings, wire, ids);
     }
@@ -280,6 +281,7 @@ public final class CommunicationManager {
         private CriticalTypes critical = CriticalTypes.DEFAULT;
         private ReassemblySettings reassembly = ReassemblySettings.DEFAULTS;
         private DeliveryListener listener;
+        private SharedDecodes sharedDecodes;
 
         private Builder(String vehicleId, Transport transport, Clock clock, Scheduler scheduler) {
             if (vehicleId == null || vehicleId.isEmpty()) {
@@ -291,6 +293,15 @@ public final class CommunicationManager {
             this.clock = Objects.requireNonNull(clock, "clock");
             this.scheduler = Objects.requireNonNull(scheduler, "scheduler");
             this.listener = new LoggingListener(vehicleId);
+        }
+
+        /**
+         * Shares the decodes of broadcast datagrams with the other cells of this process given the
+         * same table (default: none), for simulations of many cells in one process.
+         */
+        public Builder sharedDecodes(SharedDecodes table) {
+            this.sharedDecodes = table;
+            return this;
         }
 
         /** The random source of the retransmission jitter (seeded in simulation). Required. */

@@ -10,6 +10,7 @@ import net.smc.core.message.Envelope;
 import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageEncoder;
 import net.smc.core.message.ReassemblySettings;
+import net.smc.core.message.SharedDecodes;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
 import net.smc.core.transport.Transport;
@@ -27,10 +28,10 @@ final class Wire {
     private final MessageDecoder decoder;
     private final CommCounters counters;
 
-    Wire(Transport transport, Clock clock, ReassemblySettings reassembly, CommCounters counters) {
+    Wire(Transport transport, Clock clock, ReassemblySettings reassembly, CommCounters counters, SharedDecodes shared) {
         this.transport = transport;
         this.encoder = new MessageEncoder(transport.datagramCapacity());
-        this.decoder = new MessageDecoder(clock::nowMillis, reassembly);
+        this.decoder = new MessageDecoder(clock::nowMillis, reassembly).share(shared);
         this.counters = counters;
     }
 

@@ -34,6 +34,8 @@ public final class MessageDecoder {
     private long pending;
     /** The type of the message whose reassembled payload is being read, else null. */
     private MessageType reassembled;
+    /** Decodes shared with the other cells of the process, or null. */
+    private SharedDecodes shared;
 
     /** A decoder with {@link ReassemblySettings#DEFAULTS}. */
     public MessageDecoder(LongSupplier clockMillis) {
@@ -47,6 +49,15 @@ public final class MessageDecoder {
         }
         this.clock = clockMillis;
         this.reassembler = new Reassembler(settings);
+    }
+
+    /**
+     * Shares decodes of broadcast datagrams with the other decoders given the same table (see
+     * {@link SharedDecodes}); null stops sharing. A shared decode counts as decoded here.
+     */
+    public MessageDecoder share(SharedDecodes table) {
+        this.shared = table;
+        return this;
     }
 
     /** Decodes the datagram between the buffer's position and limit; the buffer is left unchanged. */
@@ -84,12 +95,24 @@ public final class MessageDecoder {
             if (length > WireFormat.MAX_DATAGRAM) {
                 throw new DecodeException(RejectReason.OVERSIZED, tooLarge(length));
             }
+            boolean sharing = shared != null && length > 3 && SharedDecodes.keeps(data[offset + 3] & 0xFF);
+            if (sharing) {
+                DecodeResult.Decoded known = shared.find(data, offset, length);
+                if (known != null) {
+                    decoded++;
+                    return known;
+                }
+            }
             reader.reset(data, offset, offset + length);
             header.read(reader);
             if (header.typeCode == WireFormat.FRAGMENT_CODE) {
                 return fragment();
             }
-            return decoded(MessageType.byCode(header.typeCode));
+            DecodeResult result = decoded(MessageType.byCode(header.typeCode));
+            if (sharing && result instanceof DecodeResult.Decoded d) {
+                shared.keep(data, offset, length, d);
+            }
+            return result;
         } catch (DecodeException e) {
             return reject(e.reason(), context(length) + e.getMessage());
         } catch (RuntimeException e) {

@@ -19,6 +19,7 @@ import net.smc.core.cell.CellBuilder;
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
 import net.smc.core.capability.CapabilityDescription;
+import net.smc.core.message.SharedDecodes;
 import net.smc.core.mission.Mission;
 import net.smc.core.role.TaskProvider;
 import net.smc.core.security.IdealAuthentication;
@@ -99,6 +100,8 @@ public final class TeamSimulation implements CellTeam {
      * runs them): a team of 1,000 would otherwise parse the same texts thousands of times.
      */
     private final ParsedUnits parsedUnits = new ParsedUnits(1_024, 16_384);
+    /** Every cell receives each discovery broadcast: one decode serves them all. */
+    private final SharedDecodes sharedDecodes = new SharedDecodes();
     private final BiConsumer<String, String> output;
     private int nextPort = 5000;
     private long restarts;
@@ -211,7 +214,7 @@ public final class TeamSimulation implements CellTeam {
         CellBuilder b = Cell.builder(n.spec.id(), mission, description)
                 .transport(transport).clock(sim).scheduler(sim).repository(repository)
                 .commander(commander).seed(seed * 1_000_003L + n.address.port() + 7919L * restarts)
-                .trace(this::record).tasks(provider).parsedUnits(parsedUnits)
+                .trace(this::record).tasks(provider).parsedUnits(parsedUnits).sharedDecodes(sharedDecodes)
                 .output(line -> output.accept(n.spec.id(), line)).auth(auth);
         if (scheme != null) {
             b.scheme(scheme);
