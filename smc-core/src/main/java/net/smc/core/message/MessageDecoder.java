@@ -95,7 +95,7 @@ public final class MessageDecoder {
             if (length > WireFormat.MAX_DATAGRAM) {
                 throw new DecodeException(RejectReason.OVERSIZED, tooLarge(length));
             }
-            boolean sharing = shared != null && length > 3 && SharedDecodes.keeps(data[offset + 3] & 0xFF);
+            boolean sharing = shared != null && length > WireFormat.FIXED_HEADER && SharedDecodes.keeps(data[offset + 3] & 0xFF);
             if (sharing) {
                 DecodeResult.Decoded known = shared.find(data, offset, length);
                 if (known != null) {

@@ -57,9 +57,19 @@ public final class SharedDecodes {
         return misses;
     }
 
+    /**
+     * The slot of a datagram, from its length, the sender's length and last bytes and the message
+     * id, which tell one sender's datagrams apart (the header: magic, version, type, sender length,
+     * sender, id); the whole datagram is compared on a hit.
+     */
     private static int slot(byte[] data, int offset, int length) {
         int h = length;
-        for (int i = offset, end = offset + length; i < end; i++) {
+        int senderLength = data[offset + 4] & 0xFF;
+        int idAt = offset + 5 + senderLength;
+        if (idAt + 8 > offset + length) {
+            return h & SLOTS - 1; // not a whole header: the decoder rejects it
+        }
+        for (int i = idAt - Math.min(2, senderLength); i < idAt + 8; i++) {
             h = 31 * h + data[i];
         }
         return (h ^ h >>> 16) & SLOTS - 1;

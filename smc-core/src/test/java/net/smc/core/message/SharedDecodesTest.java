@@ -44,6 +44,27 @@ class SharedDecodesTest {
     }
 
     @Test
+    void twoSendersWithTheSameIdAreToldApart() {
+        MessageDecoder a = decoder();
+        MessageDecoder b = decoder();
+        byte[] fromX = datagram("b0l1n2", 40, new Discovery("m", "b0l1", 1, 3));
+        byte[] fromY = datagram("b0l1n3", 40, new Discovery("m", "b0l1", 1, 3));
+        for (int i = 0; i < 3; i++) {
+            assertEquals("b0l1n2", Codec.decoded(a.decode(fromX)).sender());
+            assertEquals("b0l1n3", Codec.decoded(b.decode(fromY)).sender());
+        }
+    }
+
+    @Test
+    void aDiscoveryCutShortInItsHeaderIsRejected() {
+        byte[] d = datagram("cdr", 9, new Discovery("m", "cdr", 0, 3));
+        for (int cut = 4; cut < 20; cut++) {
+            Codec.rejected(decoder().decode(java.util.Arrays.copyOf(d, cut)));
+        }
+        assertEquals(0, table.hits());
+    }
+
+    @Test
     void unicastTypesAreNotKept() {
         byte[] d = datagram("r1", 5, new Heartbeat("surveyor", 2, 1));
         Envelope first = Codec.decoded(decoder().decode(d));
