@@ -70,7 +70,7 @@ final class Assignee {
      * of the roles that manager manages. {@link #onDiscovery} answers exactly the others (or meets a
      * rival commander), so the transport may drop such a discovery before checking its signature
      * ({@code AuthenticatingTransport.setUnverifiedFilter}): an authentic one would change nothing,
-     * a forged one would be refused. Changes no state.
+     * a forged one would be refused. Changes no state but a cache of what the mission lets it hold.
      */
     boolean ignores(String sender, Discovery d) {
         if (!d.mission().equals(ctx.missionId())) {
