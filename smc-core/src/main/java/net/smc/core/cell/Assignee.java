@@ -53,22 +53,38 @@ final class Assignee {
     }
 
     void onDiscovery(Envelope env, Discovery d) {
-        if (!d.mission().equals(ctx.missionId())) {
+        if (ignores(env.sender(), d)) {
             return;
         }
         if (st.acting && d.role().equals(Mission.COMMANDER)) {
             merge.meetCommander(env.sender(), d.epoch());
             return;
         }
-        boolean promotable = st.parent != null && !st.parent.vehicle().equals(env.sender())
+        ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
+    }
+
+    /**
+     * Whether this cell does nothing with discovery {@code d} from {@code sender}, now, whoever
+     * really sent it: another mission's; a vehicle with a parent (Algorithm 1, line 9) or that left
+     * the team, unless it could move up to a role that manager manages; a vehicle able to hold none
+     * of the roles that manager manages. {@link #onDiscovery} answers exactly the others (or meets a
+     * rival commander), so the transport may drop such a discovery before checking its signature
+     * ({@code AuthenticatingTransport.setUnverifiedFilter}): an authentic one would change nothing,
+     * a forged one would be refused. Changes no state but a cache of what the mission lets it hold.
+     */
+    boolean ignores(String sender, Discovery d) {
+        if (!d.mission().equals(ctx.missionId())) {
+            return true;
+        }
+        if (st.acting && d.role().equals(Mission.COMMANDER)) {
+            return false; // a rival commander's beacon: the merge meets it
+        }
+        boolean promotable = st.parent != null && !st.parent.vehicle().equals(sender)
                 && ctx.slots().managedRoles(d.role()).stream().anyMatch(r -> promotion(r, d.epoch()));
         if ((!st.free() || st.left) && !promotable) {
-            return; // Algorithm 1, line 9: a vehicle with a parent ignores discovery (unless it could move up)
+            return true; // Algorithm 1, line 9: a vehicle with a parent ignores discovery (unless it could move up)
         }
-        if (!promotable && !couldHoldAny(d.role())) {
-            return; // the manager could give it no seat: its role manages no role this vehicle is able to hold
-        }
-        ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
+        return !promotable && !couldHoldAny(d.role()); // the manager could give it no seat
     }
 
     void onCapabilityRequest(Envelope env, CapabilityRequest r) {

@@ -183,6 +183,9 @@ public final class Cell {
         this.gateway = new ExternalGateway(roles);
         new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol).install(engine);
         protocol.register(router);
+        if (auth != null) {
+            auth.setUnverifiedFilter(protocol::ignoresUnverified);
+        }
         engine.teamLink(new TeamLink() {
             @Override
             public long forwardEvent(TeamAddress to, String selector, String event, Map<String, Object> attributes) {

@@ -9,6 +9,7 @@ import net.smc.core.discovery.DiscoveryActions;
 import net.smc.core.message.AssignmentResponse;
 import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
+import net.smc.core.message.DecodeResult;
 import net.smc.core.message.Discovery;
 import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Echo;
@@ -18,6 +19,7 @@ import net.smc.core.message.Identity;
 import net.smc.core.message.Invocation;
 import net.smc.core.message.Leave;
 import net.smc.core.message.Message;
+import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageType;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
@@ -148,6 +150,8 @@ final class TeamProtocol implements DiscoveryActions {
     private final Supervisor supervisor;
     private final Collaboration collaboration;
     private final CellRequests cellRequests;
+    /** Decodes datagrams not yet authenticated for {@link #ignoresUnverified}: its own, so the cell's reassembly is untouched. */
+    private final MessageDecoder peek;
     private Cancellable tickTimer;
     private boolean stopped;
 
@@ -169,6 +173,7 @@ final class TeamProtocol implements DiscoveryActions {
         this.supervisor = new Supervisor(ctx, st, seating, counts, backup, recruiter, merge);
         this.collaboration = new Collaboration(ctx, st, assignee);
         this.cellRequests = new CellRequests(ctx, st, collaboration::nextCall);
+        this.peek = new MessageDecoder(ctx.clock()::nowMillis);
     }
 
     /**
@@ -201,6 +206,31 @@ final class TeamProtocol implements DiscoveryActions {
             }
         });
         route(router, MessageType.CELL_REQUEST, CellRequest.class, cellRequests::onCellRequest);
+    }
+
+    /** Where a message's type code sits in its datagram (after the magic and the version: {@code Header}). */
+    private static final int TYPE_AT = 3;
+
+    /**
+     * Whether this cell would do nothing, now, with the message in {@code datagram} (one datagram as
+     * the Communication-Manager decodes it) whoever really sent it: a discovery it would not answer
+     * ({@link Assignee#ignores}: the vehicle has a parent, or could hold no role that manager
+     * manages). In a large team every cell hears every manager's discovery and answers few of them;
+     * checking the signature of each (an Ed25519 verification, and the sender's credential the first
+     * time) is most of what a busy manager's CPU does while the team forms. An authenticating
+     * transport asks this before its checks and drops what it is told ({@code
+     * AuthenticatingTransport.setUnverifiedFilter}): dropping an authentic message this cell would
+     * ignore changes nothing, and a forged one would have been refused. It must never answer true for
+     * a message the cell acts on, or a forger could choose what the cell hears: so only discoveries,
+     * only by the same test {@link Assignee#onDiscovery} applies, and never a fragment or anything
+     * that does not decode.
+     */
+    boolean ignoresUnverified(byte[] datagram) {
+        if (datagram.length <= TYPE_AT || (datagram[TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
+            return false;
+        }
+        return peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
+                && assignee.ignores(d.envelope().sender(), discovery);
     }
 
     /** The router selects by type, so the body is of {@code body}'s class: the cast names, it does not choose. */

@@ -1,6 +1,7 @@
 package net.smc.core.security;
 
 import java.util.Optional;
+import java.util.function.Predicate;
 
 import net.smc.core.transport.Transport;
 
@@ -24,4 +25,16 @@ public interface AuthenticatingTransport extends Transport {
 
     /** The credential vehicle {@code peer} authenticated with, once it has. */
     Optional<Credential> credentialOf(String peer);
+
+    /**
+     * Sets the receiver's test of a payload not yet authenticated: {@code true} when the receiver
+     * would do nothing with it whoever sent it (a cell, a discovery it would not answer). Such a
+     * payload is then dropped, and counted, before its costly checks (a signature verification):
+     * dropping an authentic one changes nothing and a forged one would have been refused, so no
+     * sender gains anything by it. The test must not answer {@code true} for a payload the receiver
+     * acts on, and sees the payload's bytes only, not the checked sender. Payloads under a session or
+     * the team key are checked by a MAC, which costs about as little as the test, and need not be
+     * offered to it. None by default: every payload is checked.
+     */
+    void setUnverifiedFilter(Predicate<byte[]> ignorable);
 }

@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.WeakHashMap;
+import java.util.function.Predicate;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
@@ -67,10 +68,13 @@ public final class IdealAuthentication {
     private final Map<String, Credential> byVehicle = new HashMap<>();
     private final Map<Address, Long> counters = new HashMap<>();
     private final Map<Address, Integer> incarnations = new HashMap<>();
+    /** The endpoint attached at each address now (its latest incarnation). */
+    private final Map<Address, Endpoint> endpoints = new HashMap<>();
     private final long key;
     private long dropped;
     private long tampered;
     private long replayed;
+    private long ignoredUnverified;
 
     /** An instance whose tags are keyed by a fixed key (the simulated adversary never reads it). */
     public IdealAuthentication(TrustAnchor trust, Clock clock) {
@@ -101,7 +105,21 @@ public final class IdealAuthentication {
             vouched.remove(inner.localAddress());
         }
         incarnations.merge(inner.localAddress(), 1, Integer::sum);
-        return new Endpoint(inner, status, incarnations.get(inner.localAddress()));
+        Endpoint endpoint = new Endpoint(inner, status, incarnations.get(inner.localAddress()));
+        endpoints.put(inner.localAddress(), endpoint);
+        return endpoint;
+    }
+
+    /**
+     * Whether the endpoint at {@code at} drops {@code datagram} (sealed, as the network carries it)
+     * before any check, because its receiver would ignore the payload whoever sent it
+     * ({@link Endpoint#setUnverifiedFilter}): what a CPU model asks to charge no verification for it.
+     * Asked just before the datagram is worked on, it answers what the endpoint will do with it, unless
+     * the receiver's state changes in between.
+     */
+    public boolean dropsUnverified(Address at, byte[] datagram) {
+        Endpoint endpoint = endpoints.get(at);
+        return endpoint != null && endpoint.ignorable(datagram);
     }
 
     /** {@link TrustAnchor#verify}, with the signature's verification remembered across instances. */
@@ -130,6 +148,11 @@ public final class IdealAuthentication {
     /** Datagrams refused as repeats or as stale (counter outside the freshness window). */
     public long replayed() {
         return replayed;
+    }
+
+    /** Datagrams dropped unchecked because their receiver would have ignored them ({@link Endpoint#setUnverifiedFilter}). */
+    public long ignoredUnverified() {
+        return ignoredUnverified;
     }
 
     private byte[] seal(Address from, Address to, int toIncarnation, byte[] payload) {
@@ -180,6 +203,7 @@ public final class IdealAuthentication {
         private final int incarnation;
         private final Map<Address, ReplayWindow> windows = new HashMap<>();
         private AuthenticatedReceiver receiver;
+        private Predicate<byte[]> unverifiedFilter = payload -> false;
 
         private Endpoint(Transport inner, CredentialStatus status, int incarnation) {
             super(inner);
@@ -228,7 +252,27 @@ public final class IdealAuthentication {
             return Optional.ofNullable(byVehicle.get(peer));
         }
 
+        /**
+         * As {@link SecureTransport#setUnverifiedFilter}: a datagram whose payload the receiver would
+         * ignore is dropped before any check (where the real transport drops a signed one before its
+         * signature verification), and counted ({@link #ignoredUnverified()}).
+         */
+        @Override
+        public void setUnverifiedFilter(Predicate<byte[]> ignorable) {
+            this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
+        }
+
+        /** Whether {@code data} (sealed) carries a payload the receiver would ignore: read, not checked. */
+        boolean ignorable(byte[] data) {
+            return data.length >= SEAL_BYTES
+                    && unverifiedFilter.test(java.util.Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+        }
+
         private void onDatagram(Address from, byte[] data) {
+            if (ignorable(data)) {
+                ignoredUnverified++;
+                return;
+            }
             Credential sender = vouched.get(from);
             if (sender == null || receiver == null) {
                 dropped++;

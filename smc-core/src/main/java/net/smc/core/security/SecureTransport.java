@@ -1,9 +1,11 @@
 package net.smc.core.security;
 
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.function.Predicate;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Receiver;
 import net.smc.core.transport.Transport;
@@ -27,7 +29,10 @@ import org.slf4j.LoggerFactory;
  *
  * Signed datagrams (whose check costs an Ed25519 verification) are checked within a budget per
  * source address and in all ({@link SignatureBudget}); beyond it they are dropped unchecked and
- * counted ({@link #droppedOverBudget}).
+ * counted ({@link #droppedOverBudget}). Before that, a signed datagram whose payload the receiver
+ * says it would ignore whoever sent it ({@link #setUnverifiedFilter}) is dropped unchecked and
+ * counted ({@link #droppedUnverified}): a cell that hears every manager's discovery verifies only
+ * those it may answer.
  *
  * <p>Which vehicle is at which address is learned from authenticated datagrams only (signed, or MAC'd
  * under a session). Same threading as the transport it wraps: one cell thread.
@@ -42,7 +47,9 @@ public final class SecureTransport implements AuthenticatingTransport {
     private final Map<String, Address> addressOf = new HashMap<>();
     private final SignatureBudget budget = new SignatureBudget(SignatureBudget.PER_SOURCE_PER_SECOND, SignatureBudget.TOTAL_PER_SECOND);
     private AuthenticatedReceiver receiver;
+    private Predicate<byte[]> unverifiedFilter = payload -> false;
     private long droppedNoReceiver;
+    private long droppedUnverified;
     private long droppedOverBudget;
     private long probeIntervalStart = Long.MIN_VALUE;
     private int probesInInterval;
@@ -169,6 +176,16 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     @Override
+    public void setUnverifiedFilter(Predicate<byte[]> ignorable) {
+        this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
+    }
+
+    /** Signed datagrams dropped unchecked because the receiver would have ignored their payload. */
+    public long droppedUnverified() {
+        return droppedUnverified;
+    }
+
+    @Override
     public void close() {
         inner.close();
     }
@@ -193,6 +210,10 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     private void onDatagram(Address from, byte[] data) {
+        if (!isSessionTraffic(data) && ignorable(data)) {
+            droppedUnverified++;
+            return;
+        }
         if (!isSessionTraffic(data) && !budget.take(from, endpoint.clock.nowMillis())) {
             droppedOverBudget++;
             LOG.debug("'{}' dropped a signed datagram of {} bytes from {} unchecked: over the signature budget", endpoint.id(), data.length, from);
@@ -215,6 +236,16 @@ public final class SecureTransport implements AuthenticatingTransport {
             c.replyDatagram().ifPresent(reply -> inner.send(from, reply));
         } else if (result instanceof Unwrapped.Rejected r && r.reason() == Rejection.UNKNOWN_SENDER) {
             probe(r.claimedSender(), from);
+        }
+    }
+
+    /** Whether {@code data} is a signed datagram (not a HELLO) whose payload the receiver would ignore: parsed, not checked. */
+    private boolean ignorable(byte[] data) {
+        try {
+            return FrameCodec.read(data) instanceof Frame.Signed s
+                    && unverifiedFilter.test(Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()));
+        } catch (Malformed m) {
+            return false; // refused and counted by the endpoint
         }
     }
 

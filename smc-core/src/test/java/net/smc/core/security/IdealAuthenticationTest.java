@@ -2,6 +2,8 @@ package net.smc.core.security;
 
 import static net.smc.core.security.Team.T0;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -29,9 +31,11 @@ class IdealAuthenticationTest {
     private final List<byte[]> onAir = new ArrayList<>();
     private IdealAuthentication.Endpoint endpointA;
 
+    private IdealAuthentication.Endpoint endpointB;
+
     IdealAuthenticationTest() {
         endpointA = ideal.wrap(network.attach(a), team.identity("uav-a").credential());
-        IdealAuthentication.Endpoint endpointB = ideal.wrap(network.attach(b), team.identity("uav-b").credential());
+        endpointB = ideal.wrap(network.attach(b), team.identity("uav-b").credential());
         endpointB.setAuthenticatedReceiver((sender, from, protection, payload) ->
                 heardByB.add(sender + ":" + new String(payload, StandardCharsets.UTF_8)));
         endpointA.setReceiver((from, data) -> { });
@@ -54,6 +58,19 @@ class IdealAuthenticationTest {
         endpointA.broadcast("all".getBytes(StandardCharsets.UTF_8));
         scheduler.runFor(100);
         assertEquals(List.of("uav-a:hello", "uav-a:all"), heardByB);
+    }
+
+    @Test
+    void aPayloadTheReceiverWouldIgnore_isDroppedBeforeItsChecks_andTheCpuModelCanAskSo() {
+        endpointB.setUnverifiedFilter(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("IGNORED"));
+        endpointA.broadcast("IGNORED discovery".getBytes(StandardCharsets.UTF_8));
+        sendAndDeliver("answered");
+        assertEquals(List.of("uav-a:answered"), heardByB);
+        assertEquals(1, ideal.ignoredUnverified());
+        assertTrue(ideal.dropsUnverified(b, onAir.get(0)), "what the endpoint at b drops, read from the sealed datagram");
+        assertFalse(ideal.dropsUnverified(b, onAir.get(1)));
+        assertFalse(ideal.dropsUnverified(a, onAir.get(0)), "a has no filter");
+        assertFalse(ideal.dropsUnverified(Address.loopback(4999), onAir.get(0)), "no endpoint there");
     }
 
     /** The seal's 16 bytes come off the capacity the layer above fills: a full datagram fits once sealed. */

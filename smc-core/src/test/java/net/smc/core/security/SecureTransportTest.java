@@ -186,6 +186,31 @@ class SecureTransportTest {
     }
 
     @Test
+    void aSignedPayloadTheReceiverWouldIgnore_isDroppedBeforeItsCheck_whileOthersAndSessionTrafficAreChecked() {
+        Cell commander = new Cell("cmdr", 4001);
+        Cell vehicle = new Cell("uav-1", 4002);
+        commander.transport.broadcast(bytes("DISCOVERY"));
+        settle();
+        vehicle.transport.setUnverifiedFilter(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("IGNORED"));
+        byte[] forged = commander.transport.endpoint().wrapSigned(bytes("IGNORED but forged"));
+        forged[forged.length - 1] ^= 1;
+        Transport attacker = network.attach(Address.loopback(4666));
+        long badBefore = vehicle.counters().rejected(Rejection.BAD_SIGNATURE);
+
+        commander.transport.broadcast(bytes("IGNORED discovery"));
+        attacker.send(vehicle.address(), forged);
+        commander.transport.broadcast(bytes("ANSWERED discovery"));
+        commander.transport.send(vehicle.address(), bytes("IGNORED? no: under the session"));
+        settle();
+
+        assertEquals(2, vehicle.transport.droppedUnverified(), "the authentic and the forged one alike");
+        assertEquals(badBefore, vehicle.counters().rejected(Rejection.BAD_SIGNATURE), "the forged signature was never checked");
+        assertEquals(List.of("cmdr/SIGNED/DISCOVERY", "cmdr/SIGNED/ANSWERED discovery",
+                "cmdr/PAIR_MAC/IGNORED? no: under the session"), vehicle.heard);
+        assertEquals(0, commander.transport.droppedUnverified(), "no filter: everything checked");
+    }
+
+    @Test
     void restartedVehicle_getsANewSessionFromTheFirstMacItCannotRead() {
         Cell commander = new Cell("cmdr", 4001);
         SigningIdentity vehicleIdentity = team.identity("uav-1");

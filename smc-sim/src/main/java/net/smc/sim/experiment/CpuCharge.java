@@ -29,7 +29,11 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *       commander keeps of the mission) costs the parsing and loading of the text it carries, per
  *       byte of the datagram (of the whole message when fragmented, charged with its first fragment);</li>
  *   <li>a {@code DiscoveryReply} costs its receiver one condition per {@code newUAV} policy it runs
- *       (given by {@code newUavPolicies} from the receiving vehicle's id).</li>
+ *       (given by {@code newUavPolicies} from the receiving vehicle's id);</li>
+ *   <li>a datagram its receiver drops before checking it, because the cell would ignore it whoever
+ *       sent it (a discovery it would not answer: {@code AuthenticatingTransport.setUnverifiedFilter},
+ *       given by {@code dropsUnverified}), costs its decoding only: no verification, and it is no
+ *       contact.</li>
  * </ul>
  * Vehicles are known by the sender field of the datagrams they send. Also counts the datagrams and
  * bytes sent (a broadcast once: one radio transmission). Deterministic: no clock, no randomness.
@@ -44,6 +48,7 @@ public final class CpuCharge implements CpuModel {
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
     private final BiPredicate<String, String> loads;
+    private final BiPredicate<Address, byte[]> dropsUnverified;
     /** What is known of each address that sent or received: its number, vehicle and contacts. */
     private final Map<Address, Node> nodes = new HashMap<>();
     private final CpuLedger ledger = new CpuLedger();
@@ -59,6 +64,19 @@ public final class CpuCharge implements CpuModel {
      */
     public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
                      int payloadOffset) {
+        this(costs, newUavPolicies, loads, payloadOffset, (at, data) -> false);
+    }
+
+    /**
+     * As {@link #CpuCharge(CpuCosts, ToIntFunction, BiPredicate, int)}, with the receivers' test
+     * of what they drop unchecked.
+     *
+     * @param dropsUnverified whether the cell at this address drops this datagram (as the network
+     *                        carries it) before checking it; asked when its CPU takes the datagram up
+     */
+    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+                     int payloadOffset, BiPredicate<Address, byte[]> dropsUnverified) {
+        this.dropsUnverified = Objects.requireNonNull(dropsUnverified, "dropsUnverified");
         if (payloadOffset < 0) {
             throw new IllegalArgumentException("payload offset " + payloadOffset + " must be 0 or more");
         }
@@ -93,6 +111,10 @@ public final class CpuCharge implements CpuModel {
     @Override
     public long receiveMicros(Address at, Address from, byte[] data, boolean broadcast) {
         Node node = node(at);
+        if (dropsUnverified.test(at, data)) {
+            ledger.droppedUnverified(node.number, type(data));
+            return micros(charge(node, Category.CODEC, codec(data.length)));
+        }
         double ns = charge(node, Category.CODEC, codec(data.length))
                 + (broadcast ? charge(node, Category.VERIFY, costs.verifyNanos()) : charge(node, Category.MAC, mac(data.length)));
         if (node.firstContact(node(from))) {

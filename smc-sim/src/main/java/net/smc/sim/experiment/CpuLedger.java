@@ -39,6 +39,7 @@ public final class CpuLedger {
 
     private final List<double[]> nanos = new ArrayList<>();
     private final List<long[]> received = new ArrayList<>();
+    private final List<long[]> unverified = new ArrayList<>();
     private final List<String> names = new ArrayList<>();
     private final long[] sentCount = new long[KINDS];
     private final long[] sentBytes = new long[KINDS];
@@ -63,6 +64,14 @@ public final class CpuLedger {
         }
     }
 
+    /** Cell {@code node} received a datagram of kind {@code type} and dropped it unchecked (it would ignore it). */
+    void droppedUnverified(int node, int type) {
+        received(node, type);
+        if (type >= 0) {
+            unverified.get(node)[type]++;
+        }
+    }
+
     void name(int node, String vehicle) {
         grow(node);
         names.set(node, vehicle);
@@ -72,6 +81,7 @@ public final class CpuLedger {
         while (nanos.size() <= node) {
             nanos.add(new double[CATEGORIES.length]);
             received.add(new long[KINDS]);
+            unverified.add(new long[KINDS]);
             names.add(null);
         }
     }
@@ -118,6 +128,11 @@ public final class CpuLedger {
     /** Datagrams cell {@code node} received, by message kind (a fragment counts as its message's kind). */
     public Map<String, Long> receivedByKind(int node) {
         return node >= 0 && node < received.size() ? byKind(received.get(node)) : Map.of();
+    }
+
+    /** Datagrams cell {@code node} received and dropped unchecked (it would have ignored them), by kind. */
+    public Map<String, Long> droppedUnverifiedByKind(int node) {
+        return node >= 0 && node < unverified.size() ? byKind(unverified.get(node)) : Map.of();
     }
 
     /** Datagrams the team sent, by kind (a broadcast once). */
@@ -167,6 +182,11 @@ public final class CpuLedger {
         millisByCategory(b).forEach((c, ms) -> s.append(String.format(Locale.ROOT, " %s %.1f", c.name().toLowerCase(Locale.ROOT), ms)));
         s.append("\n  it received:");
         receivedByKind(b).forEach((k, n) -> s.append(' ').append(k).append(' ').append(n));
+        Map<String, Long> dropped = droppedUnverifiedByKind(b);
+        if (!dropped.isEmpty()) {
+            s.append("\n  of which it dropped unchecked (it would ignore them):");
+            dropped.forEach((k, n) -> s.append(' ').append(k).append(' ').append(n));
+        }
         s.append("\nteam sent (datagrams/bytes):");
         Map<String, Long> bytes = sentBytesByKind();
         sentByKind().forEach((k, n) -> s.append(' ').append(k).append(' ').append(n).append('/').append(bytes.get(k)));

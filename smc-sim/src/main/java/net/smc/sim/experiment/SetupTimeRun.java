@@ -59,8 +59,9 @@ public final class SetupTimeRun {
         TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(generated.repository()), seed)
                 .vehicles(generated.vehicles()).scheme(scheme).link(radio.link()).listener(progress).build();
         // The team simulation seals every datagram (IdealAuthentication): the message follows the seal's counter.
+        // A cell drops a discovery it would not answer before checking it: that costs no verification.
         CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
-                IdealAuthentication.PAYLOAD_OFFSET);
+                IdealAuthentication.PAYLOAD_OFFSET, sim.idealAuthentication()::dropsUnverified);
         InMemoryNetwork network = sim.network();
         network.setCpuModel(charge);
         network.setBandwidth(radio.bytesPerSecond());

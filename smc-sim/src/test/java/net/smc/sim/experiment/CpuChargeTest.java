@@ -99,4 +99,26 @@ class CpuChargeTest {
         assertEquals((COSTS.verifyNanos() + COSTS.agreeNanos()) / 1e6, handshake, 1e-9);
         assertEquals(0, charge.ledger().busiest());
     }
+
+    @Test
+    void aDatagramItsReceiverDropsUncheckedCostsItsDecodingOnlyAndIsNoContact() {
+        byte[] reply = sealedPolicyReply("b0l1n0");
+        boolean[] drops = {true};
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
+                (at, data) -> at.equals(vehicle) && data == reply && drops[0]);
+        long micros = charge.receiveMicros(vehicle, manager, reply, true);
+        CpuLedger ledger = charge.ledger();
+        assertEquals(Map.of(Category.CODEC, (COSTS.codecNanos() + COSTS.codecNanosPerByte() * reply.length) / 1e6),
+                ledger.millisByCategory(0), "no verification, no handshake, no loading");
+        assertEquals(Math.round((COSTS.codecNanos() + COSTS.codecNanosPerByte() * reply.length) / 1_000), micros);
+        assertEquals(Map.of("POLICY_REPLY", 1L), ledger.receivedByKind(0));
+        assertEquals(Map.of("POLICY_REPLY", 1L), ledger.droppedUnverifiedByKind(0));
+        drops[0] = false;
+        charge.receiveMicros(vehicle, manager, reply, true);
+        Map<Category, Double> checked = ledger.millisByCategory(0);
+        assertEquals(COSTS.verifyNanos() / 1e6, checked.get(Category.VERIFY), 1e-9);
+        assertEquals((COSTS.verifyNanos() + COSTS.agreeNanos()) / 1e6, checked.get(Category.HANDSHAKE), 1e-9,
+                "the dropped datagram was no contact: the checked one is the first");
+        assertEquals(Map.of("POLICY_REPLY", 1L), ledger.droppedUnverifiedByKind(0));
+    }
 }
