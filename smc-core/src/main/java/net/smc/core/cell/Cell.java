@@ -184,6 +184,7 @@ public final class Cell {
         new DiscoveryObject((uav, credential) -> accepts(auth, uav, credential), protocol).install(engine);
         protocol.register(router);
         if (auth != null) {
+            protocol.shareDecodes(b.sharedDecodes);
             auth.setUnverifiedFilter(protocol::ignoresUnverified);
         }
         engine.teamLink(new TeamLink() {

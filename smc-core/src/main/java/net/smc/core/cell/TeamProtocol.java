@@ -24,6 +24,7 @@ import net.smc.core.message.MessageType;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
+import net.smc.core.message.SharedDecodes;
 import net.smc.core.message.InvocationResult;
 import net.smc.core.message.CellRequest;
 import net.smc.core.message.RoleEvent;
@@ -210,6 +211,11 @@ final class TeamProtocol implements DiscoveryActions {
 
     /** Where a message's type code sits in its datagram (after the magic and the version: {@code Header}). */
     private static final int TYPE_AT = 3;
+
+    /** Shares the decodes of {@link #ignoresUnverified} with the process's other cells (null: none). */
+    void shareDecodes(SharedDecodes table) {
+        peek.share(table);
+    }
 
     /**
      * Whether this cell would do nothing, now, with the message in {@code datagram} (one datagram as
