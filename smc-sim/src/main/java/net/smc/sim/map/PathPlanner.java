@@ -19,13 +19,6 @@ import java.util.Optional;
  * band along a wall was a road through it: a robot standing beside a wall whose cells on the wall
  * line the ring had left free (rays grazing the wall free the cells it straddles) was given paths
  * across the wall, to the open cells on its far side.
- *
- * <p>Planned with the cells the robot's own ring has struck ({@code struck}), an unknown cell
- * beside a struck one (4-connected) counts as occupied: the struck cell holds the edge of
- * something, and its unknown side is the inside of that thing (the far half of a wall the cell
- * straddles, which the ring cannot see). Without that, a wall on the line between two columns was
- * mapped as a column of free cells (rays grazing the wall free the cells whose edge it runs along)
- * and a column of unknown ones, and paths went through it into the room beyond.
  */
 public final class PathPlanner {
     /** The cost factor of crossing an unknown cell. */
@@ -47,53 +40,6 @@ public final class PathPlanner {
 
     /** Which cells are closed, by {@code col + row * cols}. */
     public boolean[] closedCells(OccupancyGrid grid, List<Zone> avoid, double margin) {
-        return closedAround(grid, solidCells(grid, null), avoid, margin);
-    }
-
-    /**
-     * Which cells are closed, by {@code col + row * cols}, to a robot whose ring has struck the
-     * cells of {@code struck} (null: none known).
-     */
-    public boolean[] closedCells(OccupancyGrid grid, boolean[] struck, List<Zone> avoid, double margin) {
-        return closedAround(grid, solidCells(grid, struck), avoid, margin);
-    }
-
-    /**
-     * The cells a path may not enter, by {@code col + row * cols}: the occupied ones and, when
-     * {@code struck} is given (the cells the robot's ring has struck, same indexing), every unknown
-     * cell beside a struck one (4-connected).
-     *
-     * @throws IllegalArgumentException when {@code struck} does not have a cell's entry for every cell
-     */
-    public static boolean[] solidCells(OccupancyGrid grid, boolean[] struck) {
-        int cols = grid.cols();
-        int rows = grid.rows();
-        if (struck != null && struck.length != cols * rows) {
-            throw new IllegalArgumentException("struck cells: " + struck.length + " entries for a grid of " + cols * rows
-                    + " cells (" + grid.describe() + "); one entry per cell");
-        }
-        boolean[] solid = new boolean[cols * rows];
-        for (int r = 0; r < rows; r++) {
-            for (int c = 0; c < cols; c++) {
-                solid[c + r * cols] = grid.isOccupied(c, r) || struck != null && !grid.isKnown(c, r)
-                        && (struckAt(grid, struck, c + 1, r) || struckAt(grid, struck, c - 1, r)
-                        || struckAt(grid, struck, c, r + 1) || struckAt(grid, struck, c, r - 1));
-            }
-        }
-        return solid;
-    }
-
-    private static boolean struckAt(OccupancyGrid grid, boolean[] struck, int c, int r) {
-        return grid.inside(c, r) && struck[c + r * grid.cols()];
-    }
-
-    /** Whether a cell is solid; off the grid counts as solid. */
-    private static boolean solid(OccupancyGrid grid, boolean[] solid, int c, int r) {
-        return !grid.inside(c, r) || solid[c + r * grid.cols()];
-    }
-
-    /** The cells within the clearance of a solid cell, and those in an avoided zone grown by the margin. */
-    private boolean[] closedAround(OccupancyGrid grid, boolean[] solid, List<Zone> avoid, double margin) {
         int cols = grid.cols();
         int rows = grid.rows();
         boolean[] closed = new boolean[cols * rows];
@@ -108,7 +54,7 @@ public final class PathPlanner {
         }
         for (int r = 0; r < rows; r++) {
             for (int c = 0; c < cols; c++) {
-                if (!solid[c + r * cols]) {
+                if (!grid.isOccupied(c, r)) {
                     continue;
                 }
                 for (int dr = -reach; dr <= reach; dr++) {
@@ -156,10 +102,6 @@ public final class PathPlanner {
      * @param closed the closed cells ({@link #closedCells}) of {@code grid}
      */
     public static int[] escapeDepths(OccupancyGrid grid, boolean[] closed) {
-        return escapeDepths(grid, solidCells(grid, null), closed);
-    }
-
-    private static int[] escapeDepths(OccupancyGrid grid, boolean[] solid, boolean[] closed) {
         int cols = grid.cols();
         int[] depth = new int[closed.length];
         int[] queue = new int[closed.length];
@@ -182,8 +124,8 @@ public final class PathPlanner {
                         continue;
                     }
                     int next = (c + dc) + (r + dr) * cols;
-                    if (depth[next] != Integer.MAX_VALUE || solid[next]
-                            || dc != 0 && dr != 0 && (solid(grid, solid, c + dc, r) || solid(grid, solid, c, r + dr))) {
+                    if (depth[next] != Integer.MAX_VALUE || grid.isOccupied(c + dc, r + dr)
+                            || dc != 0 && dr != 0 && (grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr))) {
                         continue;
                     }
                     depth[next] = depth[cell] + 1;
@@ -202,16 +144,6 @@ public final class PathPlanner {
      * an open cell than the one before ({@link #escapeDepths}).
      */
     public Optional<List<Point>> plan(OccupancyGrid grid, Point start, Point goal, List<Zone> avoid, double margin) {
-        return plan(grid, null, start, goal, avoid, margin);
-    }
-
-    /**
-     * A path as {@link #plan(OccupancyGrid, Point, Point, List, double)} gives, for a robot whose
-     * ring has struck the cells of {@code struck} (null: none known): the unknown cells beside them
-     * count as occupied ({@link #solidCells}).
-     */
-    public Optional<List<Point>> plan(OccupancyGrid grid, boolean[] struck, Point start, Point goal, List<Zone> avoid,
-                                      double margin) {
         if (!grid.covers(goal.x(), goal.y())) {
             return Optional.empty();
         }
@@ -220,8 +152,7 @@ public final class PathPlanner {
                 return Optional.empty();
             }
         }
-        boolean[] solid = solidCells(grid, struck);
-        boolean[] closed = closedAround(grid, solid, avoid, margin);
+        boolean[] closed = closedCells(grid, avoid, margin);
         int cols = grid.cols();
         int startC = Math.max(0, Math.min(cols - 1, grid.col(start.x())));
         int startR = Math.max(0, Math.min(grid.rows() - 1, grid.row(start.y())));
@@ -240,7 +171,7 @@ public final class PathPlanner {
         OpenCells open = new OpenCells();
         open.add(heuristic(startC, startR, goalC, goalR), s);
         boolean[] done = new boolean[closed.length];
-        int[] depth = closed[s] ? escapeDepths(grid, solid, closed) : null;
+        int[] depth = closed[s] ? escapeDepths(grid, closed) : null;
         while (!open.isEmpty()) {
             int cell = open.poll();
             if (done[cell]) {
@@ -261,11 +192,11 @@ public final class PathPlanner {
                     // Closed cells are reached only from the start's closed region: from there, any
                     // cell not occupied may be entered, until the path reaches an open cell.
                     boolean leaving = closed[cell];
-                    if (done[next] || closed[next] && (!leaving || solid[next] || depth[next] >= depth[cell])) {
+                    if (done[next] || closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr) || depth[next] >= depth[cell])) {
                         continue;
                     }
                     if (dc != 0 && dr != 0 && (leaving
-                            ? solid(grid, solid, c + dc, r) || solid(grid, solid, c, r + dr)
+                            ? grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr)
                             : closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols])) {
                         continue;
                     }

@@ -36,8 +36,7 @@ import net.smc.sim.map.Zone;
  * the far side of the wall, is the common case. Those unknown cells are taken to be hidden and make
  * no frontier for this robot again; without that, such cells along every wall drew the robot back
  * again and again. For the same reason a cell the ring has struck is no frontier even when rays
- * passing beside it have freed it since, and paths are planned with the unknown cells beside the
- * struck ones taken for occupied ({@link PathPlanner#solidCells}): they lie inside what was struck.
+ * passing beside it have freed it since.
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
@@ -300,7 +299,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                     break;
                 }
                 Point goal = map.centre(next.get() % map.cols(), next.get() / map.cols());
-                Optional<List<Point>> path = p.plan(map, struck, new Point(pose.x(), pose.y()), goal, zones, 0);
+                Optional<List<Point>> path = p.plan(map, new Point(pose.x(), pose.y()), goal, zones, 0);
                 if (path.isPresent()) {
                     target = next.get();
                     nearSince = Double.NaN;
@@ -321,7 +320,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     /** Plans again to the current target on the map as it is now; whether a way is left. */
     private boolean replan(Pose pose) {
         Point p = map.centre(target % map.cols(), target / map.cols());
-        Optional<List<Point>> path = current.plan(map, struck, new Point(pose.x(), pose.y()), p, zones, 0);
+        Optional<List<Point>> path = current.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
         path.ifPresent(w -> follower.follow(w, map.resolution()));
         return path.isPresent();
     }
@@ -396,8 +395,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      */
     private Optional<Integer> nearestFrontier(Pose pose, PathPlanner planner, Set<Integer> failed) {
         int cols = map.cols();
-        boolean[] solid = PathPlanner.solidCells(map, struck);
-        boolean[] closed = planner.closedCells(map, struck, zones, 0);
+        boolean[] closed = planner.closedCells(map, zones, 0);
         int startC = Math.max(0, Math.min(cols - 1, map.col(pose.x())));
         int startR = Math.max(0, Math.min(map.rows() - 1, map.row(pose.y())));
         int start = startC + startR * cols;
@@ -421,7 +419,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                     continue;
                 }
                 int next = nc + nr * cols;
-                if (!seen[next] && (!closed[next] || closed[cell]) && !solid[next]) {
+                if (!seen[next] && (!closed[next] || closed[cell]) && !map.isOccupied(nc, nr)) {
                     seen[next] = true;
                     if (map.isKnown(nc, nr)) {
                         queue.add(next);

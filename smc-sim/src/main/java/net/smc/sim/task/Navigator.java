@@ -19,9 +19,7 @@ import net.smc.sim.map.Zone;
  * cells the ring has struck leaves too little room at the full clearance. While it drives it keeps
  * mapping from the infrared ring, re-plans every second and whenever something is in the way (after
  * backing off a little), and gives up with {@code blocked} when no path is left or it has made no
- * progress for {@link #PATIENCE} seconds. Its paths take the unknown cells beside the cells its ring
- * has struck for occupied ({@link PathPlanner#solidCells}): the far half of a wall it drove along
- * is unknown to it, and planning through it sent detectors into the wall again and again.
+ * progress for {@link #PATIENCE} seconds.
  */
 public final class Navigator extends RobotTask implements NavigatorI, Handover {
     /** Seconds without getting 0.1 m closer before giving up. */
@@ -33,8 +31,6 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
     private final PathPlanner planner;
     private final PathPlanner narrow;
     private final PathFollower follower;
-    /** The cells its ring has struck, by {@code col + row * cols}. */
-    private final boolean[] struck;
     private final List<Zone> zones = new ArrayList<>();
     private double margin = 0.5;
     private Point goal;
@@ -59,7 +55,6 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
         this.planner = new PathPlanner(clearance);
         this.narrow = new PathPlanner(Math.min(clearance, narrowClearance()));
         this.follower = new PathFollower(hardware, map.resolution(), 0.12);
-        this.struck = new boolean[map.cols() * map.rows()];
     }
 
     @Override
@@ -139,11 +134,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
 
     @Override
     protected void step(double time, double dt) {
-        for (Point hit : RangeMapper.observe(hardware, map)) {
-            if (map.covers(hit.x(), hit.y())) {
-                struck[map.col(hit.x()) + map.row(hit.y()) * map.cols()] = true;
-            }
-        }
+        RangeMapper.observe(hardware, map);
         if (goal == null) {
             return;
         }
@@ -165,9 +156,9 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
             replan = false;
             nextReplan = time + REPLAN_PERIOD;
             Point from = new Point(pose.x(), pose.y());
-            Optional<List<Point>> path = planner.plan(map, struck, from, goal, zones, margin);
+            Optional<List<Point>> path = planner.plan(map, from, goal, zones, margin);
             if (path.isEmpty()) {
-                path = narrow.plan(map, struck, from, goal, zones, margin);
+                path = narrow.plan(map, from, goal, zones, margin);
             }
             if (path.isEmpty()) {
                 giveUp();

@@ -75,67 +75,6 @@ class PathPlannerTest {
         assertTrue(throughTheDoorway, "the path goes through the doorway (y 3.5 to 4.5): " + path);
     }
 
-    /**
-     * A wall on the line between columns 7 and 8, seen from the east: the ring's grazing rays have
-     * freed column 8 (the wall runs along its edge) and struck it, and column 7, behind the wall,
-     * is unknown, as is the room beyond, seen only through the opening at rows 14 to 19. Planned
-     * without what the ring struck, the way west goes straight through the wall; with it, the
-     * unknown cells beside the struck ones are solid and the way goes through the opening.
-     */
-    @Test
-    void unknownCellsBesideStruckOnesAreSolid_soAPathDoesNotGoThroughAWallItsRingStruck() {
-        OccupancyGrid grid = new OccupancyGrid(0, 0, 4, 5, 0.25);
-        boolean[] struck = new boolean[grid.cols() * grid.rows()];
-        for (int r = 0; r < grid.rows(); r++) {
-            for (int c = 0; c < grid.cols(); c++) {
-                Point p = grid.centre(c, r);
-                if (c >= 8 || r >= 14) {
-                    grid.markFree(p.x(), p.y());
-                }
-                struck[c + r * grid.cols()] = c == 8 && r < 14;
-            }
-        }
-        Point start = grid.centre(11, 5);
-        Point goal = grid.centre(3, 5);
-        PathPlanner planner = new PathPlanner(CLEARANCE);
-
-        List<Point> blind = planner.plan(grid, start, goal, List.of(), 0).orElseThrow();
-        assertTrue(crossesTheWall(start, blind), "without the struck cells the path goes through the wall: " + blind);
-
-        boolean[] solid = PathPlanner.solidCells(grid, struck);
-        assertTrue(solid[7 + 5 * grid.cols()], "unknown beside a struck cell: solid");
-        assertFalse(solid[8 + 5 * grid.cols()], "the struck cell itself, free now, is not solid");
-        assertFalse(solid[6 + 5 * grid.cols()], "unknown two cells from a struck one: not solid");
-        assertFalse(solid[7 + 15 * grid.cols()], "the opening, known free: not solid");
-        List<Point> path = planner.plan(grid, struck, start, goal, List.of(), 0).orElseThrow();
-        assertFalse(crossesTheWall(start, path), "the path keeps out of the wall: " + path);
-        assertTrue(path.stream().anyMatch(p -> p.y() > 3.5), "the path goes through the opening: " + path);
-        assertTrue(planner.closedCells(grid, struck, List.of(), 0)[8 + 5 * grid.cols()],
-                "the cells within the clearance of a solid one are closed");
-
-        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
-                () -> PathPlanner.solidCells(grid, new boolean[3]));
-        assertTrue(e.getMessage().contains("3 entries") && e.getMessage().contains("320 cells"), e.getMessage());
-    }
-
-    /** Whether the way from {@code start} along {@code path} crosses x 1.75 to 2.25 below y 3.5 (the wall). */
-    private static boolean crossesTheWall(Point start, List<Point> path) {
-        List<Point> walked = new ArrayList<>(List.of(start));
-        walked.addAll(path);
-        for (int i = 1; i < walked.size(); i++) {
-            Point a = walked.get(i - 1);
-            Point b = walked.get(i);
-            for (double t = 0; t <= 1; t += 0.01) {
-                double x = a.x() + (b.x() - a.x()) * t;
-                double y = a.y() + (b.y() - a.y()) * t;
-                if (x > 1.75 && x < 2.25 && y < 3.5) {
-                    return true;
-                }
-            }
-        }
-        return false;
-    }
-
     /** A robot beside another robot or a wall still leaves its closed band, by the shortest way. */
     @Test
     void aRobotInAClosedBandLeavesItByTheShortestWay() {
@@ -183,51 +122,23 @@ class PathPlannerTest {
             double margin = random.nextDouble() * 0.2;
             Point start = new Point(random.nextDouble() * grid.cols() * resolution, random.nextDouble() * grid.rows() * resolution);
             Point goal = new Point(random.nextDouble() * grid.cols() * resolution, random.nextDouble() * grid.rows() * resolution);
-            boolean[] struck = null;
-            if (trial % 2 == 1) {   // half the trials plan with cells the ring struck
-                struck = new boolean[grid.cols() * grid.rows()];
-                for (int i = random.nextInt(30); i > 0; i--) {
-                    struck[random.nextInt(struck.length)] = true;
-                }
-            }
             PathPlanner planner = new PathPlanner(clearance);
             String what = "trial " + trial;
-            assertArrayEquals(plainClosed(grid, struck, clearance, zones, margin), planner.closedCells(grid, struck, zones, margin), what);
-            Optional<List<Point>> path = planner.plan(grid, struck, start, goal, zones, margin);
-            assertEquals(plainPlan(grid, struck, clearance, start, goal, zones, margin), path, what);
-            if (struck == null) {
-                assertEquals(path, planner.plan(grid, start, goal, zones, margin), what);
-                assertArrayEquals(planner.closedCells(grid, zones, margin), planner.closedCells(grid, null, zones, margin), what);
-            }
+            assertArrayEquals(plainClosed(grid, clearance, zones, margin), planner.closedCells(grid, zones, margin), what);
+            Optional<List<Point>> path = planner.plan(grid, start, goal, zones, margin);
+            assertEquals(plainPlan(grid, clearance, start, goal, zones, margin), path, what);
             paths += path.isPresent() && path.get().size() > 2 ? 1 : 0;
         }
         assertTrue(paths > 50, "enough trials found a path with turns to compare: " + paths);
     }
 
-    /** Occupied, or unknown with a struck cell beside it (4-connected); off the grid counts as solid. */
-    private static boolean plainSolid(OccupancyGrid grid, boolean[] struck, int c, int r) {
-        if (grid.isOccupied(c, r)) {
-            return true;
-        }
-        if (struck == null || grid.isKnown(c, r)) {
-            return false;
-        }
-        int[][] beside = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        for (int[] b : beside) {
-            if (grid.inside(c + b[0], r + b[1]) && struck[(c + b[0]) + (r + b[1]) * grid.cols()]) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private static boolean[] plainClosed(OccupancyGrid grid, boolean[] struck, double clearance, List<Zone> avoid, double margin) {
+    private static boolean[] plainClosed(OccupancyGrid grid, double clearance, List<Zone> avoid, double margin) {
         int cols = grid.cols();
         boolean[] closed = new boolean[cols * grid.rows()];
         int reach = (int) Math.ceil(clearance / grid.resolution());
         for (int r = 0; r < grid.rows(); r++) {
             for (int c = 0; c < cols; c++) {
-                for (int dr = -reach; dr <= reach && plainSolid(grid, struck, c, r); dr++) {
+                for (int dr = -reach; dr <= reach && grid.isOccupied(c, r); dr++) {
                     for (int dc = -reach; dc <= reach; dc++) {
                         if (grid.inside(c + dc, r + dr) && Math.hypot(dc, dr) * grid.resolution() <= clearance + 1e-9) {
                             closed[(c + dc) + (r + dr) * cols] = true;
@@ -243,12 +154,12 @@ class PathPlannerTest {
         return closed;
     }
 
-    private static Optional<List<Point>> plainPlan(OccupancyGrid grid, boolean[] struck, double clearance, Point start, Point goal,
+    private static Optional<List<Point>> plainPlan(OccupancyGrid grid, double clearance, Point start, Point goal,
                                                    List<Zone> avoid, double margin) {
         if (!grid.covers(goal.x(), goal.y()) || avoid.stream().anyMatch(z -> z.contains(goal.x(), goal.y(), margin))) {
             return Optional.empty();
         }
-        boolean[] closed = plainClosed(grid, struck, clearance, avoid, margin);
+        boolean[] closed = plainClosed(grid, clearance, avoid, margin);
         int cols = grid.cols();
         int s = Math.max(0, Math.min(cols - 1, grid.col(start.x()))) + Math.max(0, Math.min(grid.rows() - 1, grid.row(start.y()))) * cols;
         int gc = grid.col(goal.x());
@@ -264,7 +175,7 @@ class PathPlannerTest {
         PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
         open.add(new double[] {Math.hypot(s % cols - gc, s / cols - gr), s});
         boolean[] done = new boolean[closed.length];
-        int[] depth = plainDepths(grid, struck, closed);
+        int[] depth = plainDepths(grid, closed);
         while (!open.isEmpty()) {
             int cell = (int) open.poll()[1];
             if (done[cell]) {
@@ -285,9 +196,9 @@ class PathPlannerTest {
                     // From a closed cell (the closed region the robot stands in) any cell not occupied
                     // and nearer an open cell may be entered.
                     boolean leaving = closed[cell];
-                    boolean blocked = closed[next] && (!leaving || plainSolid(grid, struck, c + dc, r + dr) || depth[next] >= depth[cell]);
+                    boolean blocked = closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr) || depth[next] >= depth[cell]);
                     boolean cornerCut = dc != 0 && dr != 0 && (leaving
-                            ? plainSolid(grid, struck, c + dc, r) || plainSolid(grid, struck, c, r + dr)
+                            ? grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr)
                             : closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols]);
                     if (done[next] || blocked || cornerCut) {
                         continue;
@@ -306,7 +217,7 @@ class PathPlannerTest {
     }
 
     /** Steps from each cell to the nearest open cell, by relaxing every cell until nothing changes. */
-    private static int[] plainDepths(OccupancyGrid grid, boolean[] struck, boolean[] closed) {
+    private static int[] plainDepths(OccupancyGrid grid, boolean[] closed) {
         int cols = grid.cols();
         int[] depth = new int[closed.length];
         for (int i = 0; i < closed.length; i++) {
@@ -317,13 +228,12 @@ class PathPlannerTest {
             for (int cell = 0; cell < closed.length; cell++) {
                 int c = cell % cols;
                 int r = cell / cols;
-                if (!closed[cell] || plainSolid(grid, struck, c, r)) {
+                if (!closed[cell] || grid.isOccupied(c, r)) {
                     continue;
                 }
                 for (int dr = -1; dr <= 1; dr++) {
                     for (int dc = -1; dc <= 1; dc++) {
-                        boolean diagonalPastAnObstacle = dc != 0 && dr != 0
-                                && (plainSolid(grid, struck, c + dc, r) || plainSolid(grid, struck, c, r + dr));
+                        boolean diagonalPastAnObstacle = dc != 0 && dr != 0 && (grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr));
                         if ((dc != 0 || dr != 0) && grid.inside(c + dc, r + dr) && !diagonalPastAnObstacle) {
                             int d = depth[(c + dc) + (r + dr) * cols];
                             if (d != Integer.MAX_VALUE && d + 1 < depth[cell]) {
