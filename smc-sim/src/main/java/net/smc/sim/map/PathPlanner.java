@@ -100,9 +100,14 @@ public final class PathPlanner {
      * cell beside the diagonal is occupied: the steps by which a robot may leave a closed region.
      *
      * @param closed the closed cells ({@link #closedCells}) of {@code grid}
+     * @throws IllegalArgumentException when {@code closed} does not have one entry per cell of {@code grid}
      */
     public static int[] escapeDepths(OccupancyGrid grid, boolean[] closed) {
         int cols = grid.cols();
+        if (closed.length != cols * grid.rows()) {
+            throw new IllegalArgumentException("closed cells: " + closed.length + " entries for a grid of "
+                    + cols * grid.rows() + " cells (" + grid.describe() + "); one entry per cell");
+        }
         int[] depth = new int[closed.length];
         int[] queue = new int[closed.length];
         int head = 0;
@@ -190,7 +195,8 @@ public final class PathPlanner {
                     }
                     int next = (c + dc) + (r + dr) * cols;
                     // Closed cells are reached only from the start's closed region: from there, any
-                    // cell not occupied may be entered, until the path reaches an open cell.
+                    // cell not occupied and nearer an open cell may be entered, until the path
+                    // reaches an open cell.
                     boolean leaving = closed[cell];
                     if (done[next] || closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr) || depth[next] >= depth[cell])) {
                         continue;

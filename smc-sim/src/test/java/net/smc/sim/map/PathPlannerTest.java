@@ -57,6 +57,10 @@ class PathPlannerTest {
         assertEquals(1, depth[6 + 7 * grid.cols()], "the robot is a step from the open cells on its side");
         assertEquals(2, depth[7 + 7 * grid.cols()], "the wall line's free cells lie deeper in the closed band");
         assertEquals(Integer.MAX_VALUE, depth[7 + 6 * grid.cols()], "an occupied cell has no way out");
+        IllegalArgumentException wrongSize = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> PathPlanner.escapeDepths(grid, new boolean[3]));
+        assertTrue(wrongSize.getMessage().contains("3 entries") && wrongSize.getMessage().contains("320 cells"),
+                wrongSize.getMessage());
 
         List<Point> path = planner.plan(grid, start, goal, List.of(), 0).orElseThrow();
         boolean throughTheDoorway = false;
