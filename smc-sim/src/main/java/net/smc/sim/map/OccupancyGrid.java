@@ -28,6 +28,11 @@ public final class OccupancyGrid {
     private final boolean[] known;
     private final int[] score;
     private int knownCount;
+    /** How often a cell has changed between unknown, free and occupied: what {@link #toState()} shows. */
+    private long changes;
+    /** The rows of cells {@link #toState()} gave when {@link #changes} was {@link #linesAt} (none yet: null). */
+    private List<String> lines;
+    private long linesAt = -1;
 
     /**
      * A grid of unknown cells covering {@code width} x {@code height} metres from {@code (minX, minY)}.
@@ -161,11 +166,16 @@ public final class OccupancyGrid {
             return;
         }
         int i = col + row * cols;
+        boolean wasOccupied = score[i] > 0;
         if (!known[i]) {
             known[i] = true;
             knownCount++;
+            changes++;
         }
         score[i] = Math.max(-CAP, Math.min(CAP, score[i] + evidence));
+        if (wasOccupied != score[i] > 0) {
+            changes++;
+        }
     }
 
     /**
@@ -223,7 +233,11 @@ public final class OccupancyGrid {
                 known[i] = true;
                 knownCount++;
                 score[i] = other.score[i];
+                changes++;
             } else {
+                if (score[i] <= 0 && other.score[i] > 0) {
+                    changes++;
+                }
                 score[i] = Math.max(score[i], other.score[i]);
             }
         }
@@ -246,6 +260,7 @@ public final class OccupancyGrid {
                 known[i] = true;
                 knownCount++;
                 score[i] = other.score[i];
+                changes++;
             }
         }
     }
@@ -265,7 +280,9 @@ public final class OccupancyGrid {
     /**
      * The grid as simple values: {@code minX}, {@code minY}, {@code resolution}, {@code cols},
      * {@code rows}, and {@code cells}, one string per row from the bottom, one character per cell:
-     * {@code ?} unknown, {@code .} free, {@code #} occupied.
+     * {@code ?} unknown, {@code .} free, {@code #} occupied. The rows are written again only when a
+     * cell has changed between those three since the last call (robots export their maps with
+     * every status report, and most reports find them as they were).
      */
     public Map<String, Object> toState() {
         Map<String, Object> state = new LinkedHashMap<>();
@@ -274,15 +291,19 @@ public final class OccupancyGrid {
         state.put("resolution", resolution);
         state.put("cols", cols);
         state.put("rows", rows);
-        List<String> lines = new ArrayList<>(rows);
-        for (int r = 0; r < rows; r++) {
-            StringBuilder line = new StringBuilder(cols);
-            for (int c = 0; c < cols; c++) {
-                line.append(isOccupied(c, r) ? '#' : isFree(c, r) ? '.' : '?');
+        if (lines == null || linesAt != changes) {
+            List<String> written = new ArrayList<>(rows);
+            for (int r = 0; r < rows; r++) {
+                StringBuilder line = new StringBuilder(cols);
+                for (int c = 0; c < cols; c++) {
+                    line.append(isOccupied(c, r) ? '#' : isFree(c, r) ? '.' : '?');
+                }
+                written.add(line.toString());
             }
-            lines.add(line.toString());
+            lines = List.copyOf(written);
+            linesAt = changes;
         }
-        state.put("cells", lines);
+        state.put("cells", new ArrayList<>(lines));
         return state;
     }
 

@@ -12,9 +12,13 @@ import java.util.Optional;
  * room), or when its centre lies within an avoided zone grown by the margin and by half a cell's
  * diagonal (so no point of an open cell is inside the zone plus margin). Unknown cells are open but
  * cost {@link #UNKNOWN_COST} times a free one, so known routes are preferred. A robot standing in a
- * closed region (beside another robot, or inside a zone it has just been told to avoid) may cross
- * its closed cells, never an occupied one, until it reaches an open cell; each costs
- * {@link #CLOSED_COST} times a free one, so it leaves by the shortest way out.
+ * closed region (beside another robot or a wall, or inside a zone it has just been told to avoid)
+ * may cross its closed cells, never an occupied one, until it reaches an open cell; each costs
+ * {@link #CLOSED_COST} times a free one, and each step must bring it closer to the nearest open
+ * cell ({@link #escapeDepths}), so it leaves by a shortest way out. Without that rule the closed
+ * band along a wall was a road through it: a robot standing beside a wall whose cells on the wall
+ * line the ring had left free (rays grazing the wall free the cells it straddles) was given paths
+ * across the wall, to the open cells on its far side.
  */
 public final class PathPlanner {
     /** The cost factor of crossing an unknown cell. */
@@ -90,10 +94,59 @@ public final class PathPlanner {
     }
 
     /**
+     * How many steps each cell lies from the nearest open cell, by {@code col + row * cols}: 0 for
+     * an open cell, {@link Integer#MAX_VALUE} for an occupied cell or a closed one with no way out.
+     * A step goes to any of the 8 neighbours that is not occupied, diagonally only when neither
+     * cell beside the diagonal is occupied: the steps by which a robot may leave a closed region.
+     *
+     * @param closed the closed cells ({@link #closedCells}) of {@code grid}
+     * @throws IllegalArgumentException when {@code closed} does not have one entry per cell of {@code grid}
+     */
+    public static int[] escapeDepths(OccupancyGrid grid, boolean[] closed) {
+        int cols = grid.cols();
+        if (closed.length != cols * grid.rows()) {
+            throw new IllegalArgumentException("closed cells: " + closed.length + " entries for a grid of "
+                    + cols * grid.rows() + " cells (" + grid.describe() + "); one entry per cell");
+        }
+        int[] depth = new int[closed.length];
+        int[] queue = new int[closed.length];
+        int head = 0;
+        int tail = 0;
+        for (int i = 0; i < closed.length; i++) {
+            if (closed[i]) {
+                depth[i] = Integer.MAX_VALUE;
+            } else {
+                queue[tail++] = i;
+            }
+        }
+        while (head < tail) {
+            int cell = queue[head++];
+            int c = cell % cols;
+            int r = cell / cols;
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    if ((dc == 0 && dr == 0) || !grid.inside(c + dc, r + dr)) {
+                        continue;
+                    }
+                    int next = (c + dc) + (r + dr) * cols;
+                    if (depth[next] != Integer.MAX_VALUE || grid.isOccupied(c + dc, r + dr)
+                            || dc != 0 && dr != 0 && (grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr))) {
+                        continue;
+                    }
+                    depth[next] = depth[cell] + 1;
+                    queue[tail++] = next;
+                }
+            }
+        }
+        return depth;
+    }
+
+    /**
      * A path from {@code start} to {@code goal}: the waypoints after the start cell, ending at the
      * goal itself; empty when the goal is off the grid, closed, or cannot be reached. The start
      * cell may be closed (the robot may stand close to an obstacle, or in a zone): the path then
-     * first crosses the closed region around it, through cells that are not occupied.
+     * first crosses the closed region around it, through cells that are not occupied, each nearer
+     * an open cell than the one before ({@link #escapeDepths}).
      */
     public Optional<List<Point>> plan(OccupancyGrid grid, Point start, Point goal, List<Zone> avoid, double margin) {
         if (!grid.covers(goal.x(), goal.y())) {
@@ -123,6 +176,7 @@ public final class PathPlanner {
         OpenCells open = new OpenCells();
         open.add(heuristic(startC, startR, goalC, goalR), s);
         boolean[] done = new boolean[closed.length];
+        int[] depth = closed[s] ? escapeDepths(grid, closed) : null;
         while (!open.isEmpty()) {
             int cell = open.poll();
             if (done[cell]) {
@@ -141,9 +195,10 @@ public final class PathPlanner {
                     }
                     int next = (c + dc) + (r + dr) * cols;
                     // Closed cells are reached only from the start's closed region: from there, any
-                    // cell not occupied may be entered, until the path reaches an open cell.
+                    // cell not occupied and nearer an open cell may be entered, until the path
+                    // reaches an open cell.
                     boolean leaving = closed[cell];
-                    if (done[next] || closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr))) {
+                    if (done[next] || closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr) || depth[next] >= depth[cell])) {
                         continue;
                     }
                     if (dc != 0 && dr != 0 && (leaving

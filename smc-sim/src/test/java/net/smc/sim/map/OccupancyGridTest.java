@@ -42,6 +42,45 @@ class OccupancyGridTest {
         assertTrue(e.getMessage().contains("row 0, column 2 holds 'x'"), e.getMessage());
     }
 
+    /**
+     * The state's rows are kept between calls while no cell changes between unknown, free and
+     * occupied: after every kind of change they are those of the cells as they are.
+     */
+    @Test
+    void state_showsTheCellsAsTheyAre_afterEveryKindOfChange() {
+        java.util.Random random = new java.util.Random(5);
+        OccupancyGrid g = new OccupancyGrid(0, 0, 3, 2, 0.25);
+        for (int i = 0; i < 2_000; i++) {
+            double x = random.nextDouble() * 3;
+            double y = random.nextDouble() * 2;
+            switch (random.nextInt(6)) {
+                case 0 -> g.markFree(x, y);
+                case 1 -> g.markOccupied(x, y);
+                case 2 -> g.observeRay(x, y, random.nextDouble() * 3, random.nextDouble() * 2, random.nextBoolean());
+                case 3 -> {
+                    OccupancyGrid other = new OccupancyGrid(0, 0, 3, 2, 0.25);
+                    other.markOccupied(x, y);
+                    other.markFree(random.nextDouble() * 3, random.nextDouble() * 2);
+                    if (random.nextBoolean()) {
+                        g.merge(other);
+                    } else {
+                        g.fillUnknown(other);
+                    }
+                }
+                default -> { }   // no change: the kept rows serve
+            }
+            List<String> cells = new java.util.ArrayList<>();
+            for (int r = 0; r < g.rows(); r++) {
+                StringBuilder line = new StringBuilder();
+                for (int c = 0; c < g.cols(); c++) {
+                    line.append(g.isOccupied(c, r) ? '#' : g.isFree(c, r) ? '.' : '?');
+                }
+                cells.add(line.toString());
+            }
+            assertEquals(cells, g.toState().get("cells"), "after change " + i);
+        }
+    }
+
     @Test
     void constructor_refusesANonPositiveResolution() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new OccupancyGrid(0, 0, 2, 2, 0));

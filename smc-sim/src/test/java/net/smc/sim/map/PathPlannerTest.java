@@ -2,6 +2,7 @@ package net.smc.sim.map;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -17,11 +18,86 @@ import org.junit.jupiter.api.Test;
 /**
  * The planner finds, on any grid, the very path of a plain A* (a {@link PriorityQueue} of
  * {@code [estimate, cell]}, the clearance checked by distance around every occupied cell, a robot
- * in a closed region leaving it through cells that are not occupied): its own
+ * in a closed region leaving it through cells that are not occupied, each nearer an open cell): its own
  * open list and its clearance offsets worked out once must change how fast it plans, not which
- * path it gives, since robots follow that path and a run's timeline depends on it.
+ * path it gives, since robots follow that path and a run's timeline depends on it. A robot beside
+ * a wall leaves the wall's closed band on its own side, not across the wall.
  */
 class PathPlannerTest {
+    private static final double CLEARANCE = 0.36;
+
+    /**
+     * A wall two cells thick (columns 7 and 8, as a wall on the line between two columns is
+     * mapped) with one row of its cells left free, as rays grazing the wall leave them, and a
+     * doorway a metre wide further up; the robot stands in the wall's closed band. Leaving the band
+     * through the free cells of the wall line reached the open cells on the far side: the path went
+     * through the wall, and a detector drove into it again and again (seed 9 of the reconnaissance).
+     */
+    @Test
+    void aRobotBesideAWallLeavesItsClosedBandOnItsOwnSide_notThroughTheWallLinesFreeCells() {
+        OccupancyGrid grid = new OccupancyGrid(0, 0, 4, 5, 0.25);
+        for (int r = 0; r < grid.rows(); r++) {
+            for (int c = 0; c < grid.cols(); c++) {
+                boolean wall = (c == 7 || c == 8) && r != 7 && (r < 14 || r > 17);
+                Point p = grid.centre(c, r);
+                if (wall) {
+                    grid.markOccupied(p.x(), p.y());
+                } else {
+                    grid.markFree(p.x(), p.y());
+                }
+            }
+        }
+        Point start = grid.centre(6, 7);
+        Point goal = grid.centre(12, 7);
+        PathPlanner planner = new PathPlanner(CLEARANCE);
+        boolean[] closed = planner.closedCells(grid, List.of(), 0);
+        assertTrue(closed[6 + 7 * grid.cols()] && closed[7 + 7 * grid.cols()] && closed[8 + 7 * grid.cols()],
+                "the robot's cell and the wall line's free cells are closed");
+        int[] depth = PathPlanner.escapeDepths(grid, closed);
+        assertEquals(1, depth[6 + 7 * grid.cols()], "the robot is a step from the open cells on its side");
+        assertEquals(2, depth[7 + 7 * grid.cols()], "the wall line's free cells lie deeper in the closed band");
+        assertEquals(Integer.MAX_VALUE, depth[7 + 6 * grid.cols()], "an occupied cell has no way out");
+        IllegalArgumentException wrongSize = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> PathPlanner.escapeDepths(grid, new boolean[3]));
+        assertTrue(wrongSize.getMessage().contains("3 entries") && wrongSize.getMessage().contains("320 cells"),
+                wrongSize.getMessage());
+
+        List<Point> path = planner.plan(grid, start, goal, List.of(), 0).orElseThrow();
+        boolean throughTheDoorway = false;
+        List<Point> walked = new ArrayList<>(List.of(start));
+        walked.addAll(path);
+        for (int i = 1; i < walked.size(); i++) {
+            Point a = walked.get(i - 1);
+            Point b = walked.get(i);
+            for (double t = 0; t <= 1; t += 0.01) {
+                double x = a.x() + (b.x() - a.x()) * t;
+                double y = a.y() + (b.y() - a.y()) * t;
+                assertFalse(x > 1.75 && x < 2.25 && y < 3.5, "the path crosses the wall at " + x + "," + y + ": " + path);
+                throughTheDoorway |= x > 1.75 && x < 2.25 && y > 3.5 && y < 4.5;
+            }
+        }
+        assertTrue(throughTheDoorway, "the path goes through the doorway (y 3.5 to 4.5): " + path);
+    }
+
+    /** A robot beside another robot or a wall still leaves its closed band, by the shortest way. */
+    @Test
+    void aRobotInAClosedBandLeavesItByTheShortestWay() {
+        OccupancyGrid grid = new OccupancyGrid(0, 0, 4, 4, 0.25);
+        for (int r = 0; r < grid.rows(); r++) {
+            for (int c = 0; c < grid.cols(); c++) {
+                Point p = grid.centre(c, r);
+                if (c == 5 && r == 8) {
+                    grid.markOccupied(p.x(), p.y());
+                } else {
+                    grid.markFree(p.x(), p.y());
+                }
+            }
+        }
+        Point start = grid.centre(6, 8);   // beside the occupied cell, in its closed ring
+        List<Point> path = new PathPlanner(CLEARANCE).plan(grid, start, grid.centre(14, 8), List.of(), 0).orElseThrow();
+        assertEquals(grid.centre(14, 8), path.get(path.size() - 1));
+        assertEquals(1, path.size(), "straight out and on: " + path);
+    }
 
     @Test
     void findsThePathOfAPlainAStarOnRandomGrids() {
@@ -103,6 +179,7 @@ class PathPlannerTest {
         PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
         open.add(new double[] {Math.hypot(s % cols - gc, s / cols - gr), s});
         boolean[] done = new boolean[closed.length];
+        int[] depth = plainDepths(grid, closed);
         while (!open.isEmpty()) {
             int cell = (int) open.poll()[1];
             if (done[cell]) {
@@ -120,9 +197,10 @@ class PathPlannerTest {
                         continue;
                     }
                     int next = (c + dc) + (r + dr) * cols;
-                    // From a closed cell (the closed region the robot stands in) any cell not occupied may be entered.
+                    // From a closed cell (the closed region the robot stands in) any cell not occupied
+                    // and nearer an open cell may be entered.
                     boolean leaving = closed[cell];
-                    boolean blocked = closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr));
+                    boolean blocked = closed[next] && (!leaving || grid.isOccupied(c + dc, r + dr) || depth[next] >= depth[cell]);
                     boolean cornerCut = dc != 0 && dr != 0 && (leaving
                             ? grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr)
                             : closed[(c + dc) + r * cols] || closed[c + (r + dr) * cols]);
@@ -140,6 +218,38 @@ class PathPlannerTest {
             }
         }
         return Optional.empty();
+    }
+
+    /** Steps from each cell to the nearest open cell, by relaxing every cell until nothing changes. */
+    private static int[] plainDepths(OccupancyGrid grid, boolean[] closed) {
+        int cols = grid.cols();
+        int[] depth = new int[closed.length];
+        for (int i = 0; i < closed.length; i++) {
+            depth[i] = closed[i] ? Integer.MAX_VALUE : 0;
+        }
+        for (boolean changed = true; changed; ) {
+            changed = false;
+            for (int cell = 0; cell < closed.length; cell++) {
+                int c = cell % cols;
+                int r = cell / cols;
+                if (!closed[cell] || grid.isOccupied(c, r)) {
+                    continue;
+                }
+                for (int dr = -1; dr <= 1; dr++) {
+                    for (int dc = -1; dc <= 1; dc++) {
+                        boolean diagonalPastAnObstacle = dc != 0 && dr != 0 && (grid.isOccupied(c + dc, r) || grid.isOccupied(c, r + dr));
+                        if ((dc != 0 || dr != 0) && grid.inside(c + dc, r + dr) && !diagonalPastAnObstacle) {
+                            int d = depth[(c + dc) + (r + dr) * cols];
+                            if (d != Integer.MAX_VALUE && d + 1 < depth[cell]) {
+                                depth[cell] = d + 1;
+                                changed = true;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        return depth;
     }
 
     private static List<Point> corners(OccupancyGrid grid, int[] from, int s, int g, Point goal) {

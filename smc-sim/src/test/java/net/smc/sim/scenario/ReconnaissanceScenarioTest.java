@@ -8,8 +8,18 @@ import java.awt.Color;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.stream.LongStream;
+import java.util.stream.Stream;
 
 import net.smc.sim.render.Overlays;
 import net.smc.sim.render.Palette;
@@ -20,10 +30,9 @@ import net.smc.sim.render.WorldPainter;
 import net.smc.sim.robot.SimRobot;
 import net.smc.sim.team.TeamSimulation;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.condition.EnabledIfSystemProperty;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.api.TestFactory;
 
 /**
  * The reconnaissance of section II-A in the house: one run of 260 s of mission time (seed 1)
@@ -31,15 +40,22 @@ import org.junit.jupiter.params.provider.MethodSource;
  * detector's battery dies and grows again when the spare enters, names every change on the
  * timeline, and its hazard map shows what it claims. The mission's goal (90% of the free floor
  * and every hazard on the map within the 900 s limit) is checked on full missions of seeds 1 to
- * {@value #SAMPLE} in every run, and of the further seeds up to N with {@code -Ptest.smc.recon.seeds=N} (the README
- * gives the figures measured on 50 seeds; a run ends when the goal is met, some 10 to 20 s of
- * wall time per seed).
+ * {@value #SEEDS} in every run, a few at a time on a small pool of threads (a run ends when the
+ * goal is met: some 2 to 4 s of CPU per seed); {@code -Ptest.smc.recon.seeds=N},
+ * {@code -Ptest.smc.recon.firstSeed=F} and {@code -Ptest.smc.recon.threads=T} run seeds F to F + N - 1
+ * on T threads (seeds 1 to 50: about 110 s of CPU in all, so about a minute of wall time on two threads).
  */
 class ReconnaissanceScenarioTest {
     private static final Path PROJECT = Path.of(System.getProperty("smc.project.dir", ".."));
     private static final long SHORT_RUN = 260_000;
-    /** Seeds 1 to this are run to the goal in every test run. */
-    static final int SAMPLE = 5;
+    /**
+     * Seeds 1 to this are run to the goal in every test run. Not all 50: the goal is not met on
+     * every one of them yet (the robot whose battery dies at 70 s can stop in a doorway and seal
+     * the rooms behind it; see the README), and {@code -Ptest.smc.recon.seeds=50} runs them all.
+     */
+    static final int SEEDS = 5;
+    /** The longest wait for one seed's outcome, minutes of wall time. */
+    private static final long SEED_TIMEOUT_MINUTES = 10;
 
     private static ReconnaissanceScenario run;
     private static ReconnaissanceOutcome outcome;
@@ -162,36 +178,67 @@ class ReconnaissanceScenarioTest {
         }
     }
 
-    static LongStream sample() {
-        return LongStream.rangeClosed(1, SAMPLE);
+    /**
+     * The goal on full missions of seeds {@code smc.recon.firstSeed} (1) to that plus
+     * {@code smc.recon.seeds} ({@value #SEEDS}) less one, run on {@code smc.recon.threads} threads (the
+     * processors, at most 4): each run has its own team, world and scheduler and shares nothing
+     * mutable with the others (the processes' caches of parses and verified credentials are
+     * thread-safe and change no outcome), so a seed ends the same whatever the threads. One test per
+     * seed, its failure naming the seed, the floor mapped and the hazards missing.
+     */
+    @TestFactory
+    Stream<DynamicTest> theGoalIsMetOnEverySeed() {
+        long first = Long.getLong("smc.recon.firstSeed", 1);
+        int count = Integer.getInteger("smc.recon.seeds", SEEDS);
+        int threads = Integer.getInteger("smc.recon.threads", Math.min(4, Runtime.getRuntime().availableProcessors()));
+        if (count < 1 || threads < 1) {
+            throw new IllegalArgumentException("smc.recon.seeds " + count + " and smc.recon.threads " + threads
+                    + " must both be 1 or more");
+        }
+        ExecutorService pool = Executors.newFixedThreadPool(threads, task -> {
+            Thread t = new Thread(task, "reconnaissance seed");
+            t.setDaemon(true);
+            return t;
+        });
+        List<Long> seeds = LongStream.range(first, first + count).boxed().toList();
+        List<Future<SeedRun>> runs = seeds.stream().map(seed -> pool.submit(() -> SeedRun.of(seed))).toList();
+        pool.shutdown();
+        return seeds.stream().map(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
+            SeedRun r;
+            try {
+                r = runs.get(seeds.indexOf(seed)).get(SEED_TIMEOUT_MINUTES, TimeUnit.MINUTES);
+            } catch (ExecutionException e) {
+                throw new AssertionError("seed " + seed + ": the run failed: " + e.getCause(), e.getCause());
+            } catch (TimeoutException e) {
+                throw new AssertionError("seed " + seed + ": no outcome within " + SEED_TIMEOUT_MINUTES + " minutes of wall time");
+            }
+            System.out.println(r.measured());
+            assertTrue(r.outcome().succeeded() && r.outcome().coverage() >= 0.9 && r.missing().isEmpty(), r::failure);
+        }));
     }
 
-    @ParameterizedTest
-    @MethodSource("sample")
-    void theGoalIsMetOnTheSample(long seed) throws Exception {
-        checkGoal(seed);
-    }
+    /** One seed's full mission: its outcome, the hazards it did not find and the CPU time of its thread. */
+    private record SeedRun(long seed, ReconnaissanceOutcome outcome, List<String> missing, double cpuSeconds) {
+        static SeedRun of(long seed) throws Exception {
+            ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+            long cpu = threads.getCurrentThreadCpuTime();
+            ReconnaissanceScenario s = ReconnaissanceScenario.load(PROJECT, ReconnaissanceSettings.of(seed)
+                    .withSecurity(TeamSimulation.Security.IDEAL), row -> { });
+            ReconnaissanceOutcome o = s.run();
+            List<String> missing = s.world().arena().hazards().stream().map(h -> h.id())
+                    .filter(id -> !o.hazardsFound().contains(id)).toList();
+            return new SeedRun(seed, o, missing, (threads.getCurrentThreadCpuTime() - cpu) / 1e9);
+        }
 
-    /** Seeds {@value #SAMPLE} + 1 to N with {@code -Ptest.smc.recon.seeds=N}: with the sample, seeds 1 to N. */
-    static LongStream seeds() {
-        return LongStream.rangeClosed(SAMPLE + 1, Long.getLong("smc.recon.seeds", 0));
-    }
+        String failure() {
+            return String.format(Locale.ROOT, "seed %d: %s; %.1f%% of the free floor (goal 90%%), hazards missing %s",
+                    seed, outcome.reason(), outcome.coverage() * 100, missing);
+        }
 
-    @ParameterizedTest
-    @MethodSource("seeds")
-    @EnabledIfSystemProperty(named = "smc.recon.seeds", matches = "[0-9]+")
-    void theGoalIsMet(long seed) throws Exception {
-        checkGoal(seed);
-    }
-
-    private static void checkGoal(long seed) throws Exception {
-        ReconnaissanceScenario s = ReconnaissanceScenario.load(PROJECT, ReconnaissanceSettings.of(seed)
-                .withSecurity(TeamSimulation.Security.IDEAL), row -> { });
-        ReconnaissanceOutcome o = s.run();
-        assertTrue(o.succeeded(), () -> "seed " + seed + ": " + o.reason());
-        assertTrue(o.coverage() >= 0.9, "seed " + seed + ": coverage " + o.coverage());
-        assertEquals(s.world().arena().hazards().size(), o.hazardsFound().size(), "seed " + seed + ": every hazard");
-        System.out.println("measured: reconnaissance seed " + seed + ": 90% of the free floor at " + o.coverageMillis()
-                + " ms, goal met at " + o.missionMillis() + " ms");
+        String measured() {
+            return String.format(Locale.ROOT, "measured: reconnaissance seed %d: 90%% of the free floor at %d ms, goal %s at %d ms,"
+                    + " %.1f s of CPU", seed, outcome.coverageMillis(), outcome.succeeded() ? "met" : "not met",
+                    outcome.missionMillis(), cpuSeconds);
+        }
     }
 }
