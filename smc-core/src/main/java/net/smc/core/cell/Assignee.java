@@ -33,6 +33,10 @@ import net.smc.core.transport.Address;
  * parent asks. Owns DISCOVERY (handing a rival commander's beacon to {@link Merge}),
  * CAPABILITY_REQUEST, ROLE_ASSIGNMENT and POLICY_REPLY, and takes a parent's {@code release}
  * from {@link Collaboration}, which owns INVOCATION.
+ *
+ * <p>The manager sends the role's own policy files right behind the assignment; this cell asks for
+ * those still missing after a heartbeat period, and for the files of the roles below its own (which
+ * it serves to its children) once it has taken the role.
  */
 final class Assignee {
     private final TeamContext ctx;
@@ -43,6 +47,8 @@ final class Assignee {
     private final Map<String, Boolean> couldHold = new HashMap<>();
     /** Run when this cell has taken a role: a manager starts discovering its children at once. */
     private final Runnable roleTaken;
+    /** The assignment being taken whose missing own files this cell has asked for (expire), or null. */
+    private Incoming askedForOwnPolicies;
 
     Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge, Runnable roleTaken) {
         this.ctx = ctx;
@@ -110,29 +116,37 @@ final class Assignee {
         st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
         st.lastAssignmentFrom = from;
         st.lastAssignmentId = env.id();
-        // The role's own files first: the role starts when they are in. The files of the roles below
-        // it (this cell serves them to its children) are fetched once it has taken the role.
-        Set<String> own = ownPolicyUris(a.role());
-        for (PolicyRef ref : a.policies()) {
-            if (own.contains(ref.uri()) && !ctx.store().has(ref)) {
-                ctx.comm().send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
-            }
-        }
-        Set<String> listed = new LinkedHashSet<>();
-        a.policies().forEach(ref -> listed.add(ref.uri()));
-        for (String uri : own) {
-            if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
-                ctx.comm().send(back.get(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
-            }
-        }
+        // The role's own files come right behind the assignment (Recruiter sends them unasked): the
+        // role starts when they are in. Any still missing after a heartbeat period is asked for
+        // (expire); the files of the roles below it (this cell serves them to its children) are
+        // fetched once it has taken the role.
         completeIfReady();
     }
 
     /** The policy files of {@code role} itself: its role-missions and authorisations. */
     private Set<String> ownPolicyUris(String role) {
-        Set<String> own = new LinkedHashSet<>(ctx.slots().role(role).policies());
-        own.addAll(ctx.slots().role(role).authorisations());
-        return own;
+        return ctx.ownPolicyUris(role);
+    }
+
+    /**
+     * Asks the manager of the role being taken for those of the role's own files that have not
+     * come: the versions the assignment names, the others in the version the manager holds.
+     */
+    private void askForOwnPolicies(Incoming in) {
+        RoleAssignment a = in.assignment();
+        Set<String> own = ownPolicyUris(a.role());
+        Set<String> listed = new LinkedHashSet<>();
+        for (PolicyRef ref : a.policies()) {
+            listed.add(ref.uri());
+            if (own.contains(ref.uri()) && !ctx.store().has(ref)) {
+                ctx.comm().send(in.address(), new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        for (String uri : own) {
+            if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                ctx.comm().send(in.address(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
     }
 
     /**
@@ -345,8 +359,17 @@ final class Assignee {
                 .ifPresent(s -> seating.dropOwnSeat(s, "released by its parent"));
     }
 
-    /** Refuses the role being taken when its policies did not arrive in time. */
+    /**
+     * Asks for the role's own files that have not come a heartbeat period after the assignment (the
+     * manager's were lost for good, or it could not send them), and refuses the role being taken
+     * when its policies did not arrive in time.
+     */
     void expire(long now) {
+        if (st.incoming != null && st.incoming != askedForOwnPolicies
+                && now - st.incoming.sinceMillis() >= ctx.timing().comTimeoutMillis()) {
+            askedForOwnPolicies = st.incoming;
+            askForOwnPolicies(st.incoming);
+        }
         if (st.incoming != null && now - st.incoming.sinceMillis() > ctx.timing().failureTimeoutMillis()) {
             Incoming in = st.incoming;
             st.incoming = null;

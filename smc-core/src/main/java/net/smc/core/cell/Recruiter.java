@@ -33,10 +33,20 @@ import net.smc.core.transport.Address;
 
 /**
  * Discovery and role assignment as a manager (the paper's Algorithms 1 and 2, the parent's side):
- * hears discovery replies and raises {@code newUAV} (Table I), asks for full capability
- * descriptions, gives seats (taking a hosted one back from its host first), and settles the answers.
- * Serves policy files to assignees. Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE and
- * POLICY_REQUEST.
+ * hears discovery replies and raises {@code newUAV} (Table I), gives seats (taking a hosted one back
+ * from its host first), and settles the answers. Serves policy files to assignees, and sends a new
+ * assignee the role's own files right after its assignment.
+ *
+ * <p>When the policies ask for a vehicle's full description while deciding on its discovery reply
+ * ({@code fullCapReq}), the seat is chosen at once from the capability summary that reply carried:
+ * a seat's requirement reads only the vehicle's resources and task names
+ * ({@link net.smc.core.capability.CapabilityRequirement#isMetBy(CapabilityDescription)} reads the
+ * description's summary), and the reply came from the vehicle itself under its own authentication
+ * (signed with its credential, or MAC'd under the session with it), as a capability reply does. The
+ * request and its reply would add a round trip to every level of the management tree and decide
+ * nothing more. A request asked for outside such a decision still goes out.
+ *
+ * <p>Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE and POLICY_REQUEST.
  */
 final class Recruiter {
     private final TeamContext ctx;
@@ -48,6 +58,8 @@ final class Recruiter {
     private String deciding;
     /** Whether the policies asked for {@link #deciding}'s full description while deciding. */
     private boolean askedFor;
+    /** The roles the policies asked for {@link #deciding}'s description for: its seat is chosen among them. */
+    private final Set<String> decidedRoles = new LinkedHashSet<>();
 
     /**
      * How many capability requests for a role may be out beyond its open seats. A manager asks no
@@ -93,6 +105,7 @@ final class Recruiter {
         st.refused.remove(env.sender());
         deciding = env.sender();
         askedFor = false;
+        decidedRoles.clear();
         try {
             ctx.host().raise("newUAV", "newUAV", env.sender(), r.summary(), credential);
         } finally {
@@ -101,7 +114,32 @@ final class Recruiter {
         if (!askedFor) {
             // Taken after the raise: a change the policies made while deciding is part of their decision.
             st.refused.put(env.sender(), refusal(r.summary(), credential, now));
+        } else if (!decidedRoles.isEmpty()) {
+            Set<String> roles = new LinkedHashSet<>(decidedRoles);
+            decidedRoles.clear();
+            seatFromSummary(env.sender(), r.summary(), credential, roles);
         }
+    }
+
+    /**
+     * Algorithm 2 (line 3 on) for a vehicle the policies asked for while deciding on its discovery
+     * reply: the best open seat of the roles they asked for whose requirement the reply's summary
+     * meets (vacant first, then by priority, as for a capability reply) goes to it now.
+     */
+    private void seatFromSummary(String uav, CapabilitySummary summary, Object credential, Set<String> roles) {
+        Optional<Seat> seat = st.owned.keySet().stream()
+                .filter(s -> roles.contains(s.role()) && st.open(s))
+                .filter(s -> ctx.slots().role(s.role()).requirement().isMetBy(summary))
+                .min(this::preferVacant);
+        if (seat.isEmpty()) {
+            // No seat asked for that the vehicle can take: while the same stands, none would be found again.
+            st.refused.put(uav, refusal(summary, credential, ctx.clock().nowMillis()));
+            return;
+        }
+        if (st.owned.values().stream().anyMatch(o -> uav.equals(o.pendingFor))) {
+            return; // already being given a seat
+        }
+        giveSeat(uav, summary, seat.get());
     }
 
     /** The key of a refusal now: what the vehicle presented, the policies' version and this cell's open seats. */
@@ -130,10 +168,12 @@ final class Recruiter {
         if (st.owned.keySet().stream().noneMatch(s -> s.role().equals(role) && st.open(s))) {
             return; // nothing to give for that role now
         }
+        st.refused.remove(uav);
         if (uav.equals(deciding)) {
             askedFor = true;
+            decidedRoles.add(role); // its discovery reply's summary decides, once the policies are done
+            return;
         }
-        st.refused.remove(uav);
         PendingCapability pending = st.capabilityRequests.get(uav);
         if (pending != null) {
             pending.roles.add(role);
@@ -217,7 +257,7 @@ final class Recruiter {
         }
         Child known = st.children.get(env.sender());
         if (known != null && !known.seats.isEmpty()) {
-            known.description = full; // a child (from a roster, say): now this cell knows what it can do
+            known.description = full.summary(); // a child (from a roster, say): now this cell knows what it can do
             return;
         }
         // Algorithm 2, line 3: the description must match the requirement of one of the roles.
@@ -238,7 +278,7 @@ final class Recruiter {
         if (st.owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
             return; // already being given a seat
         }
-        giveSeat(env.sender(), full, seat.get());
+        giveSeat(env.sender(), full.summary(), seat.get());
     }
 
     /** Vacant seats first, then seats a vehicle of another role hosts; by priority. */
@@ -248,7 +288,7 @@ final class Recruiter {
     }
 
     /** Gives {@code seat} to {@code vehicle}, releasing it from a host first. */
-    void giveSeat(String vehicle, CapabilityDescription full, Seat seat) {
+    void giveSeat(String vehicle, CapabilitySummary full, Seat seat) {
         Owned o = st.owned.get(seat);
         if (o.holder != null) {
             String hostVehicle = o.holder;
@@ -305,7 +345,7 @@ final class Recruiter {
     }
 
     /** Sends the role assignment (Algorithm 1, lines 6 and 15, once accepted). */
-    void assign(String vehicle, CapabilityDescription full, Seat seat) {
+    void assign(String vehicle, CapabilitySummary full, Seat seat) {
         Optional<Address> to = ctx.address(vehicle);
         Owned o = st.owned.get(seat);
         if (to.isEmpty() || o == null) {
@@ -324,11 +364,44 @@ final class Recruiter {
         }
         ctx.emit(CellEvent.Kind.ASSIGNING, seat + " " + ctx.identityOf(seat) + " to " + vehicle
                 + (state.isEmpty() ? "" : " with handed-over state " + state));
+        boolean holdsRole = child.seats.stream().anyMatch(s -> s.role().equals(seat.role()));
         // Not delivered is not proof of not received (the Acks may be lost): the reservation stays
         // until it expires, an answer comes, or the vehicle's heartbeat shows it took the seat.
-        ctx.comm().send(to.get(), assignment, TeamContext.failureOnly(() -> ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
+        long id = ctx.comm().send(to.get(), assignment, TeamContext.failureOnly(() -> ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
                 + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
                 + ctx.pendingMillis() + " ms")));
+        if (!holdsRole) {
+            sendOwnPolicies(to.get(), seat.role(), id);
+        }
+    }
+
+    /**
+     * Sends a vehicle just assigned {@code role} the role's own policy files (its role-missions and
+     * authorisations), right behind the assignment, as replies to it: the vehicle starts the role
+     * when they are in, and asking for them first would add a round trip to every level of the
+     * management tree. A file still on its way to this cell goes when it arrives. The vehicle asks
+     * for any that has not come within a heartbeat period (Assignee), so a file this cell could not
+     * send still reaches it; one of the same role this vehicle holds from this cell it has already.
+     */
+    private void sendOwnPolicies(Address to, String role, long assignmentId) {
+        for (String uri : ctx.ownPolicyUris(role)) {
+            Optional<PolicyStore.Entry> entry = held(uri, PolicyStore.ANY_VERSION);
+            if (entry.isPresent()) {
+                ctx.comm().send(to, new PolicyReply(assignmentId, uri, entry.get().version(), entry.get().text()));
+            } else if (onItsWay(uri)) {
+                st.parkedPolicyRequests.computeIfAbsent(uri, u -> new ArrayList<>())
+                        .add(new ParkedRequest(to, assignmentId, PolicyStore.ANY_VERSION, ctx.clock().nowMillis()));
+            }
+        }
+    }
+
+    /** The file this cell can serve: from its store, or (as acting or backup commander) from its repository. */
+    private Optional<PolicyStore.Entry> held(String uri, int version) {
+        Optional<PolicyStore.Entry> entry = ctx.store().get(uri, version);
+        if (entry.isEmpty() && (st.acting || st.backupRank >= 0)) {
+            entry = ctx.fromRepository(uri).filter(e -> version == PolicyStore.ANY_VERSION || e.version() == version);
+        }
+        return entry;
     }
 
     void onAssignmentResponse(Envelope env, AssignmentResponse r) {
@@ -419,11 +492,7 @@ final class Recruiter {
     }
 
     void onPolicyRequest(Envelope env, PolicyRequest r) {
-        Optional<PolicyStore.Entry> entry = ctx.store().get(r.uri(), r.version());
-        if (entry.isEmpty() && (st.acting || st.backupRank >= 0)) {
-            entry = ctx.fromRepository(r.uri()).filter(e -> r.version() == PolicyStore.ANY_VERSION
-                    || e.version() == r.version());
-        }
+        Optional<PolicyStore.Entry> entry = held(r.uri(), r.version());
         Optional<Address> back = ctx.address(env.sender());
         if (entry.isEmpty() && back.isPresent() && onItsWay(r.uri())) {
             st.parkedPolicyRequests.computeIfAbsent(r.uri(), u -> new ArrayList<>())

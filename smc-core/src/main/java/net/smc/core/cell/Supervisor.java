@@ -45,6 +45,8 @@ final class Supervisor {
     private Cancellable rediscoveryDue;
     /** Whether the cell stopped: what fails as its communication stops asks for no rediscovery. */
     private boolean stopped;
+    /** The next early repeat of discovery while a seat stays open (see {@link #repeatDiscovery}), or null. */
+    private Cancellable repeatDue;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -176,9 +178,32 @@ final class Supervisor {
         if (open && !st.discovering) {
             ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
                     + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
+            repeatDiscovery(ctx.timing().senderSettings().initialTimeoutMillis());
         }
         st.discovering = open;
         return open;
+    }
+
+    /**
+     * Discovery and its replies travel unacknowledged: when either is lost, a seat would stay open
+     * until the next tick's discovery, a whole heartbeat period later, on every level of the tree
+     * below it. So, from each start of discovery, while a seat stays open it is discovered again
+     * after the first retransmission timeout of the critical messages, then after twice that, and so
+     * on while the wait is below a heartbeat period (100, 200 and 400 ms for a 500 ms period); from
+     * then on the tick discovers every period. Each repeat goes through {@link #rediscover}: none
+     * while capability requests are out, and within its rate limit.
+     */
+    private void repeatDiscovery(long afterMillis) {
+        if (repeatDue != null || stopped || afterMillis >= ctx.timing().comTimeoutMillis()) {
+            return;
+        }
+        repeatDue = ctx.scheduler().schedule(afterMillis, () -> {
+            repeatDue = null;
+            if (!stopped && !st.seats.isEmpty() && st.hasVacancy() && !st.recruitingHeld) {
+                rediscover();
+                repeatDiscovery(2 * afterMillis);
+            }
+        });
     }
 
     /**
@@ -226,6 +251,10 @@ final class Supervisor {
         if (rediscoveryDue != null) {
             rediscoveryDue.cancel();
             rediscoveryDue = null;
+        }
+        if (repeatDue != null) {
+            repeatDue.cancel();
+            repeatDue = null;
         }
     }
 

@@ -158,6 +158,14 @@ record TeamContext(String self, String missionId, Slots slots, Timing timing, lo
                 && r.authorisations().stream().allMatch(u -> store.get(u, PolicyStore.ANY_VERSION).isPresent());
     }
 
+    /** The policy files of {@code role} itself: its role-missions and authorisations. */
+    Set<String> ownPolicyUris(String role) {
+        MissionRole r = slots.role(role);
+        Set<String> own = new LinkedHashSet<>(r.policies());
+        own.addAll(r.authorisations());
+        return own;
+    }
+
     /** The policy URIs of a role and of every role it manages, down the tree. */
     List<String> subtreePolicyUris(String role) {
         Set<String> uris = new LinkedHashSet<>();

@@ -9,7 +9,6 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 
-import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.message.Identity;
 import net.smc.core.message.RoleAssignment;
@@ -151,7 +150,11 @@ final class TeamState {
         Address address;
         long lastHeard;
         List<Seat> seats = List.of();
-        CapabilityDescription description;
+        /**
+         * What the vehicle presented of its capabilities (its resources and tasks: all a seat's
+         * requirement reads), from its discovery reply or its full description; null until known.
+         */
+        CapabilitySummary description;
         List<Object> state = List.of();
         Map<String, Integer> subtree;
         int size = 1;
