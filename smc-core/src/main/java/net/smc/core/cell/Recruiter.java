@@ -83,7 +83,7 @@ final class Recruiter {
     }
 
     void onDiscoveryReply(Envelope env, DiscoveryReply r) {
-        if (st.owned.isEmpty() || !r.mission().equals(ctx.missionId())) {
+        if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())) {
             return;
         }
         if (!r.summary().vehicle().equals(env.sender())) {
@@ -92,32 +92,59 @@ final class Recruiter {
         }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
-        if (st.children.containsKey(env.sender()) || !st.hasVacancy() || st.recruitingHeld) {
+        if (st.owned.isEmpty()) {
+            // An answer to the discovery sent as the assignment arrived: the role's policies decide on
+            // it once the role has started (takeUpEarlyReplies).
+            st.earlyReplies.add(env.sender());
+            return;
+        }
+        decide(env.sender(), r.summary(), now);
+    }
+
+    /**
+     * The role this cell was taking has started: its policies decide on the vehicles that answered
+     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply.
+     */
+    void takeUpEarlyReplies() {
+        List<String> early = List.copyOf(st.earlyReplies);
+        st.earlyReplies.clear();
+        long now = ctx.clock().nowMillis();
+        for (String vehicle : early) {
+            Heard heard = st.heard.get(vehicle);
+            if (heard != null && !st.owned.isEmpty() && now - heard.atMillis() <= ctx.timing().failureTimeoutMillis()) {
+                decide(vehicle, heard.summary(), now);
+            }
+        }
+    }
+
+    /** Table I and Algorithm 2 on a free vehicle that answered discovery with {@code summary}. */
+    private void decide(String vehicle, CapabilitySummary summary, long now) {
+        if (st.children.containsKey(vehicle) || !st.hasVacancy() || st.recruitingHeld) {
             return; // held: a policy keeps this manager from recruiting, replies to an earlier discovery included
         }
         // Table I decides whom to ask: newUAV(name uav lowLevelCap credential).
         // A vehicle that presented no credential (or a cell without authentication) gives PonderTalk nil.
-        Object credential = ctx.host().credentialOf(env.sender()).<Object>map(c -> c).orElse(Nil.NIL);
-        Refusal before = st.refused.get(env.sender());
-        if (before != null && before.stands(refusal(r.summary(), credential, now), refusalMillis())) {
+        Object credential = ctx.host().credentialOf(vehicle).<Object>map(c -> c).orElse(Nil.NIL);
+        Refusal before = st.refused.get(vehicle);
+        if (before != null && before.stands(refusal(summary, credential, now), refusalMillis())) {
             return; // the same policies passed over the same vehicle for the same open seats: they would again
         }
-        st.refused.remove(env.sender());
-        deciding = env.sender();
+        st.refused.remove(vehicle);
+        deciding = vehicle;
         askedFor = false;
         decidedRoles.clear();
         try {
-            ctx.host().raise("newUAV", "newUAV", env.sender(), r.summary(), credential);
+            ctx.host().raise("newUAV", "newUAV", vehicle, summary, credential);
         } finally {
             deciding = null;
         }
         if (!askedFor) {
             // Taken after the raise: a change the policies made while deciding is part of their decision.
-            st.refused.put(env.sender(), refusal(r.summary(), credential, now));
+            st.refused.put(vehicle, refusal(summary, credential, now));
         } else if (!decidedRoles.isEmpty()) {
             Set<String> roles = new LinkedHashSet<>(decidedRoles);
             decidedRoles.clear();
-            seatFromSummary(env.sender(), r.summary(), credential, roles);
+            seatFromSummary(vehicle, summary, credential, roles);
         }
     }
 
@@ -205,10 +232,41 @@ final class Recruiter {
         return st.capabilityRequests.values().stream().filter(p -> p.roles.contains(role)).count();
     }
 
-    /** A request out ended without filling a seat: asks the vehicles waiting their turn, else discovers again. */
+    /**
+     * A request or assignment out ended without filling a seat: asks the vehicles waiting their
+     * turn, puts the free vehicles that answered discovery lately to the policies again, else
+     * discovers again.
+     */
     private void lookAgain() {
         askDeferred();
-        rediscover.run();   // does nothing while requests are out: their ends look again
+        decideOnHeard();
+        rediscover.run();   // does nothing while requests are out or no seat is open: their ends look again
+    }
+
+    /**
+     * Puts the vehicles that answered this cell's discovery within the first retransmission
+     * timeout of the critical messages, and are neither its children nor being given a seat, to the
+     * policies again, in the order they answered, while a seat is open: managers of the same role
+     * hear the same free vehicles and often pick the same one first, and the one that lost it need
+     * not discover again (a round trip) to find the others that answered it. A vehicle that turns
+     * out taken refuses, and is forgotten (assignmentFailed).
+     */
+    private void decideOnHeard() {
+        long now = ctx.clock().nowMillis();
+        long window = ctx.timing().senderSettings().initialTimeoutMillis();
+        List<Map.Entry<String, Heard>> recent = st.heard.entrySet().stream()
+                .filter(e -> now - e.getValue().atMillis() <= window)
+                .sorted(Map.Entry.comparingByValue(java.util.Comparator.comparingLong(Heard::atMillis)))
+                .toList();
+        for (Map.Entry<String, Heard> e : recent) {
+            if (!st.hasVacancy()) {
+                return;
+            }
+            String vehicle = e.getKey();
+            if (st.owned.values().stream().noneMatch(o -> vehicle.equals(o.pendingFor))) {
+                decide(vehicle, e.getValue().summary(), now);
+            }
+        }
     }
 
     /**
@@ -371,20 +429,26 @@ final class Recruiter {
                 + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
                 + ctx.pendingMillis() + " ms")));
         if (!holdsRole) {
-            sendOwnPolicies(to.get(), seat.role(), id);
+            sendPolicies(to.get(), seat.role(), id);
         }
     }
 
     /**
-     * Sends a vehicle just assigned {@code role} the role's own policy files (its role-missions and
-     * authorisations), right behind the assignment, as replies to it: the vehicle starts the role
-     * when they are in, and asking for them first would add a round trip to every level of the
-     * management tree. A file still on its way to this cell goes when it arrives. The vehicle asks
-     * for any that has not come within a heartbeat period (Assignee), so a file this cell could not
-     * send still reaches it; one of the same role this vehicle holds from this cell it has already.
+     * Sends a vehicle just assigned {@code role} policy files right behind the assignment, as
+     * replies to it ({@link TeamContext#policiesWithAssignment}): first the role's own (its
+     * role-missions and authorisations: the vehicle starts the role when they are in), then those
+     * of the roles it manages directly, which it sends on to its own children. Asking for them
+     * would add a round trip to every level of the management tree, and a manager that fetched its
+     * children's files only once its role had started would hold its first child's role up until
+     * they came. The files of the roles further down, needed a level later, the vehicle fetches
+     * once its role has started, so that a manager assigning several roles at once sends their
+     * own files before the deeper ones. A file still on its way to this cell goes when it arrives.
+     * The vehicle asks for any that has not come within a heartbeat period (Assignee), so a file
+     * this cell could not send still reaches it; one of the same role this vehicle holds from this
+     * cell it has already.
      */
-    private void sendOwnPolicies(Address to, String role, long assignmentId) {
-        for (String uri : ctx.ownPolicyUris(role)) {
+    private void sendPolicies(Address to, String role, long assignmentId) {
+        for (String uri : ctx.policiesWithAssignment(role)) {
             Optional<PolicyStore.Entry> entry = held(uri, PolicyStore.ANY_VERSION);
             if (entry.isPresent()) {
                 ctx.comm().send(to, new PolicyReply(assignmentId, uri, entry.get().version(), entry.get().text()));
@@ -412,6 +476,7 @@ final class Recruiter {
         if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
             // The vehicle declined a capability request: it took a seat from another manager since it
             // answered discovery. The request no longer holds rediscovery back; look again now.
+            st.heard.remove(vehicle);
             lookAgain();
             return;
         }
@@ -485,6 +550,7 @@ final class Recruiter {
         if (child != null && child.seats.isEmpty()) {
             st.children.remove(vehicle);
         }
+        st.heard.remove(vehicle); // it refused, or fell silent: what it answered no longer holds
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
         // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
         // say), not at the next tick.

@@ -219,6 +219,22 @@ final class Supervisor {
     }
 
     /**
+     * This cell has just taken a role. When it discovered as the assignment arrived (Assignee),
+     * less than the first retransmission timeout ago, the answers may still be coming: its
+     * discovery starts (a DISCOVERING event, and its early repeats) without a second broadcast.
+     */
+    void roleStarted() {
+        long sinceEarly = ctx.clock().nowMillis() - st.earlyDiscoveryMillis;
+        if (sinceEarly < ctx.timing().senderSettings().initialTimeoutMillis()) {
+            if (!st.seats.isEmpty() && !st.owned.isEmpty()) {
+                noteDiscovering();
+            }
+            return;
+        }
+        discoverNow();
+    }
+
+    /**
      * A seat offered to a vehicle is open again (it refused, or never answered): discovers at once,
      * unless capability requests are still out (their answers will find the seat open, with no
      * broadcast: in a large team many managers compete for the same free vehicles, and each

@@ -79,6 +79,13 @@ final class TeamState {
      * (it fetches them after taking its role), by URI: answered when the file arrives (Recruiter).
      */
     final Map<String, List<ParkedRequest>> parkedPolicyRequests = new HashMap<>();
+    /**
+     * When this cell, taking a role that manages others, discovered as the assignment arrived, with
+     * the role's files still on their way (Assignee; far in the past: never), and the vehicles that
+     * answered before the role started, which its policies decide on once it has (Recruiter).
+     */
+    long earlyDiscoveryMillis = Long.MIN_VALUE / 2;
+    final Set<String> earlyReplies = new LinkedHashSet<>();
     /** Free vehicles this cell's policies passed over when they were discovered, by vehicle (Recruiter). */
     final Map<String, Refusal> refused = new HashMap<>();
     final Map<String, List<Object>> handover = new HashMap<>();
