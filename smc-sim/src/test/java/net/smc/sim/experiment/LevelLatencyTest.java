@@ -42,13 +42,21 @@ class LevelLatencyTest {
     private static final class Counts implements NetworkObserver {
         final CpuCharge parse = new CpuCharge(CpuCosts.ZERO, v -> 0, (v, u) -> false, IdealAuthentication.PAYLOAD_OFFSET);
         final Map<String, Map<MessageType, Integer>> bySender = new HashMap<>();
+        /** When a copy of each vehicle's first discovery broadcast arrived anywhere. */
+        final Map<String, Long> firstDiscovery = new HashMap<>();
+        /** When copies of each vehicle's discovery broadcasts arrived. */
+        final Map<String, List<Long>> discoveries = new HashMap<>();
 
         @Override
         public void delivered(long atMillis, Address from, Address to, byte[] data) {
             int type = parse.type(data);
             if (type >= 0) {
-                bySender.computeIfAbsent(parse.sender(data), v -> new HashMap<>())
-                        .merge(MessageType.fromCode(type), 1, Integer::sum);
+                String sender = parse.sender(data);
+                bySender.computeIfAbsent(sender, v -> new HashMap<>()).merge(MessageType.fromCode(type), 1, Integer::sum);
+                if (type == MessageType.DISCOVERY.code()) {
+                    firstDiscovery.putIfAbsent(sender, atMillis);
+                    discoveries.computeIfAbsent(sender, v -> new ArrayList<>()).add(atMillis);
+                }
             }
         }
 
@@ -71,6 +79,95 @@ class LevelLatencyTest {
                 .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(link).listener(events::add).build();
     }
 
+    /** The vehicles of the roles of {@code level}. */
+    private static List<String> vehicles(GeneratedMission g, int level) {
+        List<String> vehicles = new ArrayList<>();
+        g.roles().stream().filter(r -> r.level() == level).forEach(r -> {
+            for (int i = 0; i < r.seats(); i++) {
+                vehicles.add(r.vehicle(i));
+            }
+        });
+        return vehicles;
+    }
+
+    private static long first(List<CellEvent> events, String vehicle, CellEvent.Kind kind) {
+        return events.stream().filter(e -> e.vehicle().equals(vehicle) && e.kind() == kind).mapToLong(CellEvent::timeMillis)
+                .findFirst().orElse(-1);
+    }
+
+    /**
+     * A manager discovers as its assignment arrives, while its role's files are on their way and
+     * loading (20 us a byte here, about 18 ms a file): its discovery reaches others before its role
+     * starts, and its policies decide on the answers as the role starts, so it gives its first seat
+     * within a few ms of starting, not a discovery round trip (6 ms on this network) later.
+     */
+    @Test
+    void aManagerDiscoversWhileItsFilesAreOnTheirWayAndAssignsAsItsRoleStarts() throws Exception {
+        GeneratedMission g = generated();
+        List<CellEvent> events = new ArrayList<>();
+        // No jitter, so that the files do not overtake the assignment they follow.
+        TeamSimulation sim = team(g, events, LinkProfile.fixed(3));
+        CpuCosts slowLoading = new CpuCosts(0, 0, 0, 0, 0, 0, 0, 20_000, 0);
+        sim.network().setCpuModel(new CpuCharge(slowLoading, v -> g.newUavPolicies(v, Scheme.DISTRIBUTED), g::loadsPolicy,
+                IdealAuthentication.PAYLOAD_OFFSET));
+        Counts counts = new Counts();
+        sim.network().addObserver(counts);
+        sim.start();
+        assertTrue(sim.runUntil(() -> started(events).size() == ROLES - 1, 10_000), () -> String.join("\n", sim.trace()));
+        List<String> managers = vehicles(g, 1);
+        managers.addAll(vehicles(g, 2));
+        // A level-2 manager owns the leaves' seats of its branch with the others of its level; with
+        // fewer leaves than managers some own none, and look for no one.
+        managers.removeIf(m -> first(events, m, CellEvent.Kind.ASSIGNING) < 0);
+        assertTrue(managers.size() >= 6, () -> "managers that gave a seat: " + managers);
+        for (String manager : managers) {
+            long started = first(events, manager, CellEvent.Kind.ACCEPTED);
+            long assigning = first(events, manager, CellEvent.Kind.ASSIGNING);
+            Long discovered = counts.firstDiscovery.get(manager);
+            assertTrue(discovered != null && discovered < started,
+                    () -> manager + " started at " + started + " ms, its discovery arrived at " + discovered + " ms\n" + String.join("\n", sim.trace()));
+            assertTrue(assigning >= started && assigning - started < 5,
+                    () -> manager + " started at " + started + " ms, gave its first seat at " + assigning + " ms");
+        }
+    }
+
+    /**
+     * The managers of one role type hear the same free vehicles and often give their seats to the
+     * same one first; the one that lost it puts the others that answered it to its policies again
+     * at once, without discovering again: its next seat goes out within a few ms of the refusal,
+     * with no discovery of its own in between.
+     */
+    @Test
+    void aManagerThatLostAVehicleToAnotherAssignsOneThatAnsweredItWithoutDiscovering() throws Exception {
+        GeneratedMission g = generated();
+        int refusals = 0;
+        for (long seed = 11; seed <= 14; seed++) {
+            List<CellEvent> events = new ArrayList<>();
+            Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
+            TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
+                    .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(LinkProfile.fixed(3).withLatency(3, 2))
+                    .listener(events::add).build();
+            Counts counts = new Counts();
+            sim.network().addObserver(counts);
+            sim.start();
+            assertTrue(sim.runUntil(() -> started(events).size() == ROLES - 1, 10_000), () -> String.join("\n", sim.trace()));
+            for (CellEvent failed : events) {
+                if (failed.kind() != CellEvent.Kind.ASSIGNMENT_FAILED || !failed.detail().contains("refused")) {
+                    continue;
+                }
+                refusals++;
+                long at = failed.timeMillis();
+                long next = events.stream().filter(e -> e.vehicle().equals(failed.vehicle()) && e.kind() == CellEvent.Kind.ASSIGNING
+                        && e.timeMillis() >= at).mapToLong(CellEvent::timeMillis).findFirst().orElse(-1);
+                boolean discoveredBetween = counts.discoveries.getOrDefault(failed.vehicle(), List.of()).stream()
+                        .anyMatch(t -> t >= at && t <= next);
+                assertTrue(next >= 0 && next - at < 3 && !discoveredBetween, () -> failed + ": next seat given at " + next
+                        + " ms\n" + String.join("\n", sim.trace()));
+            }
+        }
+        assertTrue(refusals > 0, "no manager lost a vehicle to another in seeds 11-14: the test saw nothing");
+    }
+
     private static Set<String> started(List<CellEvent> events) {
         Set<String> vehicles = new HashSet<>();
         events.stream().filter(e -> e.kind() == CellEvent.Kind.ACCEPTED).forEach(e -> vehicles.add(e.vehicle()));
@@ -78,9 +175,9 @@ class LevelLatencyTest {
     }
 
     /**
-     * On a network that loses nothing, the team forms with no capability request at all, and no
-     * leaf (whose role manages none, so it fetches no file for children) asks for a policy file:
-     * its role's files came behind its assignment.
+     * On a network that loses nothing, the team forms with no capability request at all, and
+     * neither a leaf nor a manager of leaves asks for a policy file: its role's files, and those of
+     * the roles it manages, came behind its assignment.
      */
     @Test
     void noCapabilityRequestAndNoPolicyRequestForARolesOwnFiles() throws Exception {
@@ -93,8 +190,8 @@ class LevelLatencyTest {
         assertTrue(sim.runUntil(() -> started(events).size() == ROLES - 1, 10_000), () -> String.join("\n", sim.trace()));
         assertEquals(0, counts.of(MessageType.CAPABILITY_REQUEST), () -> "capability requests: " + counts.bySender);
         assertTrue(counts.of(MessageType.ROLE_ASSIGNMENT) >= ROLES - 1);
-        List<String> leaves = g.roles().stream().filter(r -> r.level() == 3).flatMap(r -> java.util.stream.IntStream
-                .range(0, r.seats()).mapToObj(r::vehicle)).toList();
+        List<String> leaves = vehicles(g, 2);
+        leaves.addAll(vehicles(g, 3));
         assertTrue(!leaves.isEmpty());
         for (String leaf : leaves) {
             assertEquals(0, counts.of(leaf, MessageType.POLICY_REQUEST), () -> leaf + " asked for policy files: " + counts.bySender);
