@@ -103,7 +103,9 @@ final class Recruiter {
 
     /**
      * The role this cell was taking has started: its policies decide on the vehicles that answered
-     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply.
+     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply; on
+     * those that answered within a heartbeat period, as an older answer may no longer hold (the
+     * vehicle has taken a role since), and a fresh discovery costs less than an assignment refused.
      */
     void takeUpEarlyReplies() {
         List<String> early = List.copyOf(st.earlyReplies);
@@ -111,7 +113,7 @@ final class Recruiter {
         long now = ctx.clock().nowMillis();
         for (String vehicle : early) {
             Heard heard = st.heard.get(vehicle);
-            if (heard != null && !st.owned.isEmpty() && now - heard.atMillis() <= ctx.timing().failureTimeoutMillis()) {
+            if (heard != null && !st.owned.isEmpty() && now - heard.atMillis() <= ctx.timing().comTimeoutMillis()) {
                 decide(vehicle, heard.summary(), now);
             }
         }
