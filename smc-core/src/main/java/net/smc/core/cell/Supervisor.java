@@ -210,12 +210,14 @@ final class Supervisor {
      * Discovers at once when this cell has an open seat: a manager whose role has just started (or
      * a commander starting) looks for its children now rather than at its next tick, so a tree of
      * depth d forms without waiting up to d heartbeat periods. The tick goes on discovering every
-     * period while a seat stays open.
+     * period while a seat stays open. Returns whether it discovered.
      */
-    void discoverNow() {
+    boolean discoverNow() {
         if (!st.seats.isEmpty() && !st.owned.isEmpty() && noteDiscovering()) {
             merge.discover();
+            return true;
         }
+        return false;
     }
 
     /**
@@ -241,7 +243,8 @@ final class Supervisor {
      * rediscovery would bring every one of them to answer again), and not within a quarter
      * heartbeat period of the last such discovery, so that vehicles refusing every offer cost at
      * most four extra discoveries a period: one asked for sooner runs when that quarter period has
-     * passed.
+     * passed. Only a discovery sent counts: a call that found no seat open (another vehicle is
+     * being given it) does not hold back the next.
      */
     void rediscover() {
         if (stopped || !st.capabilityRequests.isEmpty() || rediscoveryDue != null) {
@@ -250,8 +253,9 @@ final class Supervisor {
         long now = ctx.clock().nowMillis();
         long allowedAt = rediscoveredMillis + ctx.timing().comTimeoutMillis() / 4;
         if (now >= allowedAt) {
-            rediscoveredMillis = now;
-            discoverNow();
+            if (discoverNow()) {
+                rediscoveredMillis = now; // only a discovery sent counts against the limit
+            }
             return;
         }
         // Held back by the rate limit: discovers when the limit allows, not a period later at the tick.

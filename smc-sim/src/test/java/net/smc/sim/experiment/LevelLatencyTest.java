@@ -34,6 +34,8 @@ import net.smc.sim.team.TeamSimulation;
  */
 class LevelLatencyTest {
     private static final int ROLES = 20;
+    /** The costs of docs/fig8-costs.properties (the README's set-up time table), rounded to 0.1 us. */
+    private static final CpuCosts FIG8_COSTS = new CpuCosts(241_635.8, 350_298.8, 676_307.1, 11_749.5, 0, 858.4, 8.6, 4_617.4, 2_445.5);
 
     @TempDir
     Path dir;
@@ -166,6 +168,57 @@ class LevelLatencyTest {
             }
         }
         assertTrue(refusals > 0, "no manager lost a vehicle to another in seeds 11-14: the test saw nothing");
+    }
+
+    /**
+     * A manager whose seat was refused, with none of the vehicles that answered it still free,
+     * discovers again at once unless it discovered again within the last quarter heartbeat period
+     * (the rediscovery rate limit: 125 ms). A rediscovery asked for while its only open seat was
+     * being given to another vehicle sends nothing and does not count against that limit; when it
+     * did, a refusal soon after waited for the limit, or for the next tick. 50 roles on the radio
+     * model with the costs of the README's table, seeds 3-8: the case comes up several times.
+     */
+    @Test
+    void aRefusedSeatIsLookedForAgainAtOnceUnlessADiscoveryWasSentWithinTheRateLimit() throws Exception {
+        GeneratedMission g = MissionGenerator.write(TreeShape.of(50, 4), dir, Project.bootEvents());
+        Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
+        int looked = 0;
+        for (long seed = 3; seed <= 8; seed++) {
+            List<CellEvent> events = new ArrayList<>();
+            TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
+                    .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(RadioNetwork.ADHOC_80211.link())
+                    .listener(events::add).build();
+            sim.network().setCpuModel(new CpuCharge(FIG8_COSTS, v -> g.newUavPolicies(v, Scheme.DISTRIBUTED),
+                    g::loadsPolicy, IdealAuthentication.PAYLOAD_OFFSET));
+            sim.network().setBandwidth(RadioNetwork.ADHOC_80211.bytesPerSecond());
+            Counts counts = new Counts();
+            sim.network().addObserver(counts);
+            sim.start();
+            assertTrue(sim.runUntil(() -> started(events).size() == 49, 20_000), () -> String.join("\n", sim.trace()));
+            for (CellEvent failed : events) {
+                if (failed.kind() != CellEvent.Kind.ASSIGNMENT_FAILED || !failed.detail().contains("refused")) {
+                    continue;
+                }
+                long at = failed.timeMillis();
+                String manager = failed.vehicle();
+                boolean assignedAtOnce = events.stream().anyMatch(e -> e.vehicle().equals(manager)
+                        && e.kind() == CellEvent.Kind.ASSIGNING && e.timeMillis() >= at && e.timeMillis() <= at + 1);
+                if (assignedAtOnce) {
+                    continue; // another vehicle that answered it was put to its policies
+                }
+                looked++;
+                List<Long> discoveries = counts.discoveries.getOrDefault(manager, List.of());
+                // A copy of a discovery arrives 4 to 8 ms after it was sent. The manager's first
+                // discovery (its copies arrive within 15 ms) is no rediscovery: it counts against no limit.
+                long firstBurst = discoveries.isEmpty() ? Long.MAX_VALUE : discoveries.get(0) + 15;
+                boolean recently = discoveries.stream().anyMatch(t -> t > firstBurst && t - 8 >= at - 125 && t - 4 <= at);
+                boolean atOnce = discoveries.stream().anyMatch(t -> t >= at && t <= at + 15);
+                final long seedNow = seed;
+                assertTrue(recently || atOnce, () -> "seed " + seedNow + ": " + failed + "; its discoveries arrived at "
+                        + discoveries.stream().distinct().toList());
+            }
+        }
+        assertTrue(looked >= 2, "only " + looked + " refusals left a manager with no vehicle to try: the test saw too little");
     }
 
     private static Set<String> started(List<CellEvent> events) {
