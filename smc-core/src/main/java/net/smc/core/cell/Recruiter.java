@@ -1,7 +1,6 @@
 package net.smc.core.cell;
 
 import java.math.BigDecimal;
-import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -13,7 +12,6 @@ import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
-import net.smc.core.cell.TeamState.ParkedRequest;
 import net.smc.core.cell.TeamState.PendingCapability;
 import net.smc.core.cell.TeamState.Refusal;
 import net.smc.core.comm.DeliveryListener;
@@ -25,7 +23,6 @@ import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Invocation;
 import net.smc.core.message.Leave;
-import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
 import net.smc.policy.api.Nil;
@@ -35,7 +32,7 @@ import net.smc.core.transport.Address;
  * Discovery and role assignment as a manager (the paper's Algorithms 1 and 2, the parent's side):
  * hears discovery replies and raises {@code newUAV} (Table I), gives seats (taking a hosted one back
  * from its host first), and settles the answers. Serves policy files to assignees, and sends a new
- * assignee the role's own files right after its assignment.
+ * assignee the files of its role and of the roles it manages right after its assignment.
  *
  * <p>When the policies ask for a vehicle's full description while deciding on its discovery reply
  * ({@code fullCapReq}), the seat is chosen at once from the capability summary that reply carried:
@@ -72,9 +69,12 @@ final class Recruiter {
 
     /** Discovers at once (rate-limited by Supervisor), when a seat offered to a vehicle opens again. */
     private final Runnable rediscover;
+    /** Serves policy files to assignees and children. */
+    private final PolicyServer policies;
 
     Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
         this.rediscover = rediscover;
+        this.policies = new PolicyServer(ctx, st);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -431,43 +431,8 @@ final class Recruiter {
                 + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
                 + ctx.pendingMillis() + " ms")));
         if (!holdsRole) {
-            sendPolicies(to.get(), seat.role(), id);
+            policies.sendWithAssignment(to.get(), seat.role(), id);
         }
-    }
-
-    /**
-     * Sends a vehicle just assigned {@code role} policy files right behind the assignment, as
-     * replies to it ({@link TeamContext#policiesWithAssignment}): first the role's own (its
-     * role-missions and authorisations: the vehicle starts the role when they are in), then those
-     * of the roles it manages directly, which it sends on to its own children. Asking for them
-     * would add a round trip to every level of the management tree, and a manager that fetched its
-     * children's files only once its role had started would hold its first child's role up until
-     * they came. The files of the roles further down, needed a level later, the vehicle fetches
-     * once its role has started, so that a manager assigning several roles at once sends their
-     * own files before the deeper ones. A file still on its way to this cell goes when it arrives.
-     * The vehicle asks for any that has not come within a heartbeat period (Assignee), so a file
-     * this cell could not send still reaches it; one of the same role this vehicle holds from this
-     * cell it has already.
-     */
-    private void sendPolicies(Address to, String role, long assignmentId) {
-        for (String uri : ctx.policiesWithAssignment(role)) {
-            Optional<PolicyStore.Entry> entry = held(uri, PolicyStore.ANY_VERSION);
-            if (entry.isPresent()) {
-                ctx.comm().send(to, new PolicyReply(assignmentId, uri, entry.get().version(), entry.get().text()));
-            } else if (onItsWay(uri)) {
-                st.parkedPolicyRequests.computeIfAbsent(uri, u -> new ArrayList<>())
-                        .add(new ParkedRequest(to, assignmentId, PolicyStore.ANY_VERSION, ctx.clock().nowMillis()));
-            }
-        }
-    }
-
-    /** The file this cell can serve: from its store, or (as acting or backup commander) from its repository. */
-    private Optional<PolicyStore.Entry> held(String uri, int version) {
-        Optional<PolicyStore.Entry> entry = ctx.store().get(uri, version);
-        if (entry.isEmpty() && (st.acting || st.backupRank >= 0)) {
-            entry = ctx.fromRepository(uri).filter(e -> version == PolicyStore.ANY_VERSION || e.version() == version);
-        }
-        return entry;
     }
 
     void onAssignmentResponse(Envelope env, AssignmentResponse r) {
@@ -560,42 +525,12 @@ final class Recruiter {
     }
 
     void onPolicyRequest(Envelope env, PolicyRequest r) {
-        Optional<PolicyStore.Entry> entry = held(r.uri(), r.version());
-        Optional<Address> back = ctx.address(env.sender());
-        if (entry.isEmpty() && back.isPresent() && onItsWay(r.uri())) {
-            st.parkedPolicyRequests.computeIfAbsent(r.uri(), u -> new ArrayList<>())
-                    .add(new ParkedRequest(back.get(), env.id(), r.version(), ctx.clock().nowMillis()));
-            return; // answered when the file arrives (policyArrived)
-        }
-        if (entry.isEmpty() || back.isEmpty()) {
-            ctx.reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
-            return;
-        }
-        ctx.comm().send(back.get(), new PolicyReply(env.id(), r.uri(), entry.get().version(), entry.get().text()));
-    }
-
-    /**
-     * Whether a policy file this cell does not hold is on its way to it: a file of the roles below
-     * one it holds, which it fetches from its own manager after taking the role.
-     */
-    private boolean onItsWay(String uri) {
-        return st.parent != null && st.seats.stream().anyMatch(s -> ctx.subtreePolicyUris(s.role()).contains(uri));
+        policies.onPolicyRequest(env, r);
     }
 
     /** A policy file arrived: answers the children's requests that waited for it. */
     void policyArrived(String uri) {
-        List<ParkedRequest> parked = st.parkedPolicyRequests.get(uri);
-        if (parked == null) {
-            return;
-        }
-        parked.removeIf(p -> {
-            Optional<PolicyStore.Entry> entry = ctx.store().get(uri, p.version());
-            entry.ifPresent(e -> ctx.comm().send(p.from(), new PolicyReply(p.envelopeId(), uri, e.version(), e.text())));
-            return entry.isPresent();
-        });
-        if (parked.isEmpty()) {
-            st.parkedPolicyRequests.remove(uri);
-        }
+        policies.policyArrived(uri);
     }
 
     /** Drops stale requests and reservations, and reports each reservation that expired. */
@@ -604,10 +539,7 @@ final class Recruiter {
         st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
         st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
         st.refused.values().removeIf(r -> now - r.atMillis() >= refusalMillis());
-        st.parkedPolicyRequests.values().removeIf(parked -> {
-            parked.removeIf(p -> now - p.atMillis() > ctx.timing().failureTimeoutMillis());
-            return parked.isEmpty();
-        });
+        policies.expire(now);
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();
             if (o.pendingFor != null && now - o.pendingSince > ctx.pendingMillis()) {
