@@ -33,6 +33,12 @@ import net.smc.core.transport.Address;
  * parent asks. Owns DISCOVERY (handing a rival commander's beacon to {@link Merge}),
  * CAPABILITY_REQUEST, ROLE_ASSIGNMENT and POLICY_REPLY, and takes a parent's {@code release}
  * from {@link Collaboration}, which owns INVOCATION.
+ *
+ * <p>The manager sends the role's own policy files right behind the assignment, then those of the
+ * roles it manages directly (which this cell sends its children); this cell asks for the files of
+ * the roles further down once it has taken the role, for the role's own still missing a heartbeat
+ * period after the assignment, and for its children's still missing a heartbeat period after it
+ * took the role.
  */
 final class Assignee {
     private final TeamContext ctx;
@@ -43,6 +49,14 @@ final class Assignee {
     private final Map<String, Boolean> couldHold = new HashMap<>();
     /** Run when this cell has taken a role: a manager starts discovering its children at once. */
     private final Runnable roleTaken;
+    /** The assignment being taken whose missing own files this cell has asked for (expire), or null. */
+    private Incoming askedForOwnPolicies;
+    /** The role taken whose children's files this cell asks for if they have not come (expire), or null. */
+    private SubtreeFetch subtreeFetch;
+
+    /** A role taken at {@code sinceMillis} from {@code manager} (at {@code from}), by assignment {@code assignment}. */
+    private record SubtreeFetch(String manager, Address from, RoleAssignment assignment, long sinceMillis) {
+    }
 
     Assignee(TeamContext ctx, TeamState st, Seating seating, Merge merge, Runnable roleTaken) {
         this.ctx = ctx;
@@ -126,37 +140,61 @@ final class Assignee {
         st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
         st.lastAssignmentFrom = from;
         st.lastAssignmentId = env.id();
-        // The role's own files first: the role starts when they are in. The files of the roles below
-        // it (this cell serves them to its children) are fetched once it has taken the role.
-        Set<String> own = ownPolicyUris(a.role());
-        for (PolicyRef ref : a.policies()) {
-            if (own.contains(ref.uri()) && !ctx.store().has(ref)) {
-                ctx.comm().send(back.get(), new PolicyRequest(ref.uri(), ref.version()));
-            }
-        }
-        Set<String> listed = new LinkedHashSet<>();
-        a.policies().forEach(ref -> listed.add(ref.uri()));
-        for (String uri : own) {
-            if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
-                ctx.comm().send(back.get(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
-            }
-        }
+        discoverEarly(a);
+        // The role's own files come right behind the assignment (Recruiter sends them unasked), then
+        // those of the roles it manages (this cell sends them to its children): the role starts
+        // when its own are in. Any still missing after a heartbeat period is asked for (expire).
         completeIfReady();
+    }
+
+    /**
+     * A vehicle holding nothing that is taking a role which manages others broadcasts the role's
+     * discovery now, while the role's files are on their way and loading, instead of once the role
+     * has started: the answers come meanwhile. The role's own policies still decide on every
+     * answer, once the role has started (Recruiter.takeUpEarlyReplies); what overlaps the download
+     * is only the wait for the answers.
+     */
+    private void discoverEarly(RoleAssignment a) {
+        if (!st.seats.isEmpty() || st.recruitingHeld || ctx.slots().managedRoles(a.role()).isEmpty()) {
+            return;
+        }
+        st.earlyReplies.clear();
+        st.earlyDiscoveryMillis = ctx.clock().nowMillis();
+        ctx.comm().broadcast(new Discovery(ctx.missionId(), a.role(), ctx.slots().level(a.role()), a.epoch()));
     }
 
     /** The policy files of {@code role} itself: its role-missions and authorisations. */
     private Set<String> ownPolicyUris(String role) {
-        Set<String> own = new LinkedHashSet<>(ctx.slots().role(role).policies());
-        own.addAll(ctx.slots().role(role).authorisations());
-        return own;
+        return ctx.ownPolicyUris(role);
+    }
+
+    /**
+     * Asks the manager of the role being taken for those of the role's own files that have not
+     * come: the versions the assignment names, the others in the version the manager holds.
+     */
+    private void askForOwnPolicies(Incoming in) {
+        RoleAssignment a = in.assignment();
+        Set<String> own = ownPolicyUris(a.role());
+        Set<String> listed = new LinkedHashSet<>();
+        for (PolicyRef ref : a.policies()) {
+            listed.add(ref.uri());
+            if (own.contains(ref.uri()) && !ctx.store().has(ref)) {
+                ctx.comm().send(in.address(), new PolicyRequest(ref.uri(), ref.version()));
+            }
+        }
+        for (String uri : own) {
+            if (!listed.contains(uri) && ctx.store().get(uri, PolicyStore.ANY_VERSION).isEmpty()) {
+                ctx.comm().send(in.address(), new PolicyRequest(uri, PolicyStore.ANY_VERSION));
+            }
+        }
     }
 
     /**
      * Fetches, from the manager that gave {@code a}, whatever the roles below the role taken need and
-     * this cell does not hold: the versions the assignment names, and any other file of the subtree.
+     * this cell does not hold, but the files {@code own} (coming, or held): the versions the
+     * assignment names, and any other file of the subtree.
      */
-    private void fetchSubtreePolicies(Address from, RoleAssignment a) {
-        Set<String> own = ownPolicyUris(a.role());
+    private void fetchSubtreePolicies(Address from, RoleAssignment a, Set<String> own) {
         Set<String> listed = new LinkedHashSet<>();
         for (PolicyRef ref : a.policies()) {
             listed.add(ref.uri());
@@ -285,7 +323,11 @@ final class Assignee {
         seating.recomputeOwnership();
         ctx.emit(CellEvent.Kind.ACCEPTED, seat + " " + a.identity() + " from " + in.from() + ", holds " + st.seats);
         ctx.comm().send(in.address(), new AssignmentResponse(in.envelopeId(), a.role(), true, ""));
-        fetchSubtreePolicies(in.address(), a);
+        if (!ctx.slots().managedRoles(a.role()).isEmpty()) {
+            // The files of the roles further down the manager does not send: ask for them now.
+            fetchSubtreePolicies(in.address(), a, ctx.policiesWithAssignment(a.role()));
+            subtreeFetch = new SubtreeFetch(in.from(), in.address(), a, ctx.clock().nowMillis());
+        }
         if (!a.handover().isEmpty()) {
             st.handedOver = a.handover();
             ctx.host().importTaskStates(a.role(), a.handover());
@@ -361,8 +403,26 @@ final class Assignee {
                 .ifPresent(s -> seating.dropOwnSeat(s, "released by its parent"));
     }
 
-    /** Refuses the role being taken when its policies did not arrive in time. */
+    /**
+     * Asks for the role's own files that have not come a heartbeat period after the assignment, and
+     * for the files of the roles below it that have not come a heartbeat period after it started
+     * (the manager's were lost for good, or it could not send them); refuses the role being taken
+     * when its policies did not arrive in time.
+     */
     void expire(long now) {
+        if (subtreeFetch != null && now - subtreeFetch.sinceMillis() >= ctx.timing().comTimeoutMillis()) {
+            SubtreeFetch due = subtreeFetch;
+            subtreeFetch = null;
+            if (st.parent != null && st.parent.vehicle().equals(due.manager())
+                    && st.seats.stream().anyMatch(s -> s.role().equals(due.assignment().role()))) {
+                fetchSubtreePolicies(due.from(), due.assignment(), ownPolicyUris(due.assignment().role()));
+            }
+        }
+        if (st.incoming != null && st.incoming != askedForOwnPolicies
+                && now - st.incoming.sinceMillis() >= ctx.timing().comTimeoutMillis()) {
+            askedForOwnPolicies = st.incoming;
+            askForOwnPolicies(st.incoming);
+        }
         if (st.incoming != null && now - st.incoming.sinceMillis() > ctx.timing().failureTimeoutMillis()) {
             Incoming in = st.incoming;
             st.incoming = null;

@@ -1,7 +1,6 @@
 package net.smc.core.cell;
 
 import java.math.BigDecimal;
-import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -13,7 +12,6 @@ import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
-import net.smc.core.cell.TeamState.ParkedRequest;
 import net.smc.core.cell.TeamState.PendingCapability;
 import net.smc.core.cell.TeamState.Refusal;
 import net.smc.core.comm.DeliveryListener;
@@ -25,7 +23,6 @@ import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Invocation;
 import net.smc.core.message.Leave;
-import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
 import net.smc.policy.api.Nil;
@@ -33,10 +30,20 @@ import net.smc.core.transport.Address;
 
 /**
  * Discovery and role assignment as a manager (the paper's Algorithms 1 and 2, the parent's side):
- * hears discovery replies and raises {@code newUAV} (Table I), asks for full capability
- * descriptions, gives seats (taking a hosted one back from its host first), and settles the answers.
- * Serves policy files to assignees. Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE and
- * POLICY_REQUEST.
+ * hears discovery replies and raises {@code newUAV} (Table I), gives seats (taking a hosted one back
+ * from its host first), and settles the answers. Serves policy files to assignees, and sends a new
+ * assignee the files of its role and of the roles it manages right after its assignment.
+ *
+ * <p>When the policies ask for a vehicle's full description while deciding on its discovery reply
+ * ({@code fullCapReq}), the seat is chosen at once from the capability summary that reply carried:
+ * a seat's requirement reads only the vehicle's resources and task names
+ * ({@link net.smc.core.capability.CapabilityRequirement#isMetBy(CapabilityDescription)} reads the
+ * description's summary), and the reply came from the vehicle itself under its own authentication
+ * (signed with its credential, or MAC'd under the session with it), as a capability reply does. The
+ * request and its reply would add a round trip to every level of the management tree and decide
+ * nothing more. A request asked for outside such a decision still goes out.
+ *
+ * <p>Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE and POLICY_REQUEST.
  */
 final class Recruiter {
     private final TeamContext ctx;
@@ -48,6 +55,8 @@ final class Recruiter {
     private String deciding;
     /** Whether the policies asked for {@link #deciding}'s full description while deciding. */
     private boolean askedFor;
+    /** The roles the policies asked for {@link #deciding}'s description for: its seat is chosen among them. */
+    private final Set<String> decidedRoles = new LinkedHashSet<>();
 
     /**
      * How many capability requests for a role may be out beyond its open seats. A manager asks no
@@ -60,9 +69,12 @@ final class Recruiter {
 
     /** Discovers at once (rate-limited by Supervisor), when a seat offered to a vehicle opens again. */
     private final Runnable rediscover;
+    /** Serves policy files to assignees and children. */
+    private final PolicyServer policies;
 
     Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
         this.rediscover = rediscover;
+        this.policies = new PolicyServer(ctx, st);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -71,7 +83,7 @@ final class Recruiter {
     }
 
     void onDiscoveryReply(Envelope env, DiscoveryReply r) {
-        if (st.owned.isEmpty() || !r.mission().equals(ctx.missionId())) {
+        if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())) {
             return;
         }
         if (!r.summary().vehicle().equals(env.sender())) {
@@ -80,28 +92,83 @@ final class Recruiter {
         }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
-        if (st.children.containsKey(env.sender()) || !st.hasVacancy() || st.recruitingHeld) {
+        if (st.owned.isEmpty()) {
+            // An answer to the discovery sent as the assignment arrived: the role's policies decide on
+            // it once the role has started (takeUpEarlyReplies).
+            st.earlyReplies.add(env.sender());
+            return;
+        }
+        decide(env.sender(), r.summary(), now);
+    }
+
+    /**
+     * The role this cell was taking has started: its policies decide on the vehicles that answered
+     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply; on
+     * those that answered within a heartbeat period, as an older answer may no longer hold (the
+     * vehicle has taken a role since), and a fresh discovery costs less than an assignment refused.
+     */
+    void takeUpEarlyReplies() {
+        List<String> early = List.copyOf(st.earlyReplies);
+        st.earlyReplies.clear();
+        long now = ctx.clock().nowMillis();
+        for (String vehicle : early) {
+            Heard heard = st.heard.get(vehicle);
+            if (heard != null && !st.owned.isEmpty() && now - heard.atMillis() <= ctx.timing().comTimeoutMillis()) {
+                decide(vehicle, heard.summary(), now);
+            }
+        }
+    }
+
+    /** Table I and Algorithm 2 on a free vehicle that answered discovery with {@code summary}. */
+    private void decide(String vehicle, CapabilitySummary summary, long now) {
+        if (st.children.containsKey(vehicle) || !st.hasVacancy() || st.recruitingHeld) {
             return; // held: a policy keeps this manager from recruiting, replies to an earlier discovery included
         }
         // Table I decides whom to ask: newUAV(name uav lowLevelCap credential).
         // A vehicle that presented no credential (or a cell without authentication) gives PonderTalk nil.
-        Object credential = ctx.host().credentialOf(env.sender()).<Object>map(c -> c).orElse(Nil.NIL);
-        Refusal before = st.refused.get(env.sender());
-        if (before != null && before.stands(refusal(r.summary(), credential, now), refusalMillis())) {
+        Object credential = ctx.host().credentialOf(vehicle).<Object>map(c -> c).orElse(Nil.NIL);
+        Refusal before = st.refused.get(vehicle);
+        if (before != null && before.stands(refusal(summary, credential, now), refusalMillis())) {
             return; // the same policies passed over the same vehicle for the same open seats: they would again
         }
-        st.refused.remove(env.sender());
-        deciding = env.sender();
+        st.refused.remove(vehicle);
+        deciding = vehicle;
         askedFor = false;
+        decidedRoles.clear();
         try {
-            ctx.host().raise("newUAV", "newUAV", env.sender(), r.summary(), credential);
+            ctx.host().raise("newUAV", "newUAV", vehicle, summary, credential);
         } finally {
             deciding = null;
         }
         if (!askedFor) {
             // Taken after the raise: a change the policies made while deciding is part of their decision.
-            st.refused.put(env.sender(), refusal(r.summary(), credential, now));
+            st.refused.put(vehicle, refusal(summary, credential, now));
+        } else if (!decidedRoles.isEmpty()) {
+            Set<String> roles = new LinkedHashSet<>(decidedRoles);
+            decidedRoles.clear();
+            seatFromSummary(vehicle, summary, credential, roles);
         }
+    }
+
+    /**
+     * Algorithm 2 (line 3 on) for a vehicle the policies asked for while deciding on its discovery
+     * reply: the best open seat of the roles they asked for whose requirement the reply's summary
+     * meets (vacant first, then by priority, as for a capability reply) goes to it now.
+     */
+    private void seatFromSummary(String uav, CapabilitySummary summary, Object credential, Set<String> roles) {
+        Optional<Seat> seat = st.owned.keySet().stream()
+                .filter(s -> roles.contains(s.role()) && st.open(s))
+                .filter(s -> ctx.slots().role(s.role()).requirement().isMetBy(summary))
+                .min(this::preferVacant);
+        if (seat.isEmpty()) {
+            // No seat asked for that the vehicle can take: while the same stands, none would be found again.
+            st.refused.put(uav, refusal(summary, credential, ctx.clock().nowMillis()));
+            return;
+        }
+        if (st.owned.values().stream().anyMatch(o -> uav.equals(o.pendingFor))) {
+            return; // already being given a seat
+        }
+        giveSeat(uav, summary, seat.get());
     }
 
     /** The key of a refusal now: what the vehicle presented, the policies' version and this cell's open seats. */
@@ -130,10 +197,12 @@ final class Recruiter {
         if (st.owned.keySet().stream().noneMatch(s -> s.role().equals(role) && st.open(s))) {
             return; // nothing to give for that role now
         }
+        st.refused.remove(uav);
         if (uav.equals(deciding)) {
             askedFor = true;
+            decidedRoles.add(role); // its discovery reply's summary decides, once the policies are done
+            return;
         }
-        st.refused.remove(uav);
         PendingCapability pending = st.capabilityRequests.get(uav);
         if (pending != null) {
             pending.roles.add(role);
@@ -165,10 +234,41 @@ final class Recruiter {
         return st.capabilityRequests.values().stream().filter(p -> p.roles.contains(role)).count();
     }
 
-    /** A request out ended without filling a seat: asks the vehicles waiting their turn, else discovers again. */
+    /**
+     * A request or assignment out ended without filling a seat: asks the vehicles waiting their
+     * turn, puts the free vehicles that answered discovery lately to the policies again, else
+     * discovers again.
+     */
     private void lookAgain() {
         askDeferred();
-        rediscover.run();   // does nothing while requests are out: their ends look again
+        decideOnHeard();
+        rediscover.run();   // does nothing while requests are out or no seat is open: their ends look again
+    }
+
+    /**
+     * Puts the vehicles that answered this cell's discovery within the first retransmission
+     * timeout of the critical messages, and are neither its children nor being given a seat, to the
+     * policies again, in the order they answered, while a seat is open: managers of the same role
+     * hear the same free vehicles and often pick the same one first, and the one that lost it need
+     * not discover again (a round trip) to find the others that answered it. A vehicle that turns
+     * out taken refuses, and is forgotten (assignmentFailed).
+     */
+    private void decideOnHeard() {
+        long now = ctx.clock().nowMillis();
+        long window = ctx.timing().senderSettings().initialTimeoutMillis();
+        List<Map.Entry<String, Heard>> recent = st.heard.entrySet().stream()
+                .filter(e -> now - e.getValue().atMillis() <= window)
+                .sorted(Map.Entry.comparingByValue(java.util.Comparator.comparingLong(Heard::atMillis)))
+                .toList();
+        for (Map.Entry<String, Heard> e : recent) {
+            if (!st.hasVacancy()) {
+                return;
+            }
+            String vehicle = e.getKey();
+            if (st.owned.values().stream().noneMatch(o -> vehicle.equals(o.pendingFor))) {
+                decide(vehicle, e.getValue().summary(), now);
+            }
+        }
     }
 
     /**
@@ -217,7 +317,7 @@ final class Recruiter {
         }
         Child known = st.children.get(env.sender());
         if (known != null && !known.seats.isEmpty()) {
-            known.description = full; // a child (from a roster, say): now this cell knows what it can do
+            known.description = full.summary(); // a child (from a roster, say): now this cell knows what it can do
             return;
         }
         // Algorithm 2, line 3: the description must match the requirement of one of the roles.
@@ -238,7 +338,7 @@ final class Recruiter {
         if (st.owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
             return; // already being given a seat
         }
-        giveSeat(env.sender(), full, seat.get());
+        giveSeat(env.sender(), full.summary(), seat.get());
     }
 
     /** Vacant seats first, then seats a vehicle of another role hosts; by priority. */
@@ -248,7 +348,7 @@ final class Recruiter {
     }
 
     /** Gives {@code seat} to {@code vehicle}, releasing it from a host first. */
-    void giveSeat(String vehicle, CapabilityDescription full, Seat seat) {
+    void giveSeat(String vehicle, CapabilitySummary full, Seat seat) {
         Owned o = st.owned.get(seat);
         if (o.holder != null) {
             String hostVehicle = o.holder;
@@ -305,7 +405,7 @@ final class Recruiter {
     }
 
     /** Sends the role assignment (Algorithm 1, lines 6 and 15, once accepted). */
-    void assign(String vehicle, CapabilityDescription full, Seat seat) {
+    void assign(String vehicle, CapabilitySummary full, Seat seat) {
         Optional<Address> to = ctx.address(vehicle);
         Owned o = st.owned.get(seat);
         if (to.isEmpty() || o == null) {
@@ -324,11 +424,15 @@ final class Recruiter {
         }
         ctx.emit(CellEvent.Kind.ASSIGNING, seat + " " + ctx.identityOf(seat) + " to " + vehicle
                 + (state.isEmpty() ? "" : " with handed-over state " + state));
+        boolean holdsRole = child.seats.stream().anyMatch(s -> s.role().equals(seat.role()));
         // Not delivered is not proof of not received (the Acks may be lost): the reservation stays
         // until it expires, an answer comes, or the vehicle's heartbeat shows it took the seat.
-        ctx.comm().send(to.get(), assignment, TeamContext.failureOnly(() -> ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
+        long id = ctx.comm().send(to.get(), assignment, TeamContext.failureOnly(() -> ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to "
                 + vehicle + ": not acknowledged; the seat stays reserved until an answer or "
                 + ctx.pendingMillis() + " ms")));
+        if (!holdsRole) {
+            policies.sendWithAssignment(to.get(), seat.role(), id);
+        }
     }
 
     void onAssignmentResponse(Envelope env, AssignmentResponse r) {
@@ -339,6 +443,7 @@ final class Recruiter {
         if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
             // The vehicle declined a capability request: it took a seat from another manager since it
             // answered discovery. The request no longer holds rediscovery back; look again now.
+            st.heard.remove(vehicle);
             lookAgain();
             return;
         }
@@ -412,6 +517,7 @@ final class Recruiter {
         if (child != null && child.seats.isEmpty()) {
             st.children.remove(vehicle);
         }
+        st.heard.remove(vehicle); // it refused, or fell silent: what it answered no longer holds
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
         // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
         // say), not at the next tick.
@@ -419,46 +525,12 @@ final class Recruiter {
     }
 
     void onPolicyRequest(Envelope env, PolicyRequest r) {
-        Optional<PolicyStore.Entry> entry = ctx.store().get(r.uri(), r.version());
-        if (entry.isEmpty() && (st.acting || st.backupRank >= 0)) {
-            entry = ctx.fromRepository(r.uri()).filter(e -> r.version() == PolicyStore.ANY_VERSION
-                    || e.version() == r.version());
-        }
-        Optional<Address> back = ctx.address(env.sender());
-        if (entry.isEmpty() && back.isPresent() && onItsWay(r.uri())) {
-            st.parkedPolicyRequests.computeIfAbsent(r.uri(), u -> new ArrayList<>())
-                    .add(new ParkedRequest(back.get(), env.id(), r.version(), ctx.clock().nowMillis()));
-            return; // answered when the file arrives (policyArrived)
-        }
-        if (entry.isEmpty() || back.isEmpty()) {
-            ctx.reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
-            return;
-        }
-        ctx.comm().send(back.get(), new PolicyReply(env.id(), r.uri(), entry.get().version(), entry.get().text()));
-    }
-
-    /**
-     * Whether a policy file this cell does not hold is on its way to it: a file of the roles below
-     * one it holds, which it fetches from its own manager after taking the role.
-     */
-    private boolean onItsWay(String uri) {
-        return st.parent != null && st.seats.stream().anyMatch(s -> ctx.subtreePolicyUris(s.role()).contains(uri));
+        policies.onPolicyRequest(env, r);
     }
 
     /** A policy file arrived: answers the children's requests that waited for it. */
     void policyArrived(String uri) {
-        List<ParkedRequest> parked = st.parkedPolicyRequests.get(uri);
-        if (parked == null) {
-            return;
-        }
-        parked.removeIf(p -> {
-            Optional<PolicyStore.Entry> entry = ctx.store().get(uri, p.version());
-            entry.ifPresent(e -> ctx.comm().send(p.from(), new PolicyReply(p.envelopeId(), uri, e.version(), e.text())));
-            return entry.isPresent();
-        });
-        if (parked.isEmpty()) {
-            st.parkedPolicyRequests.remove(uri);
-        }
+        policies.policyArrived(uri);
     }
 
     /** Drops stale requests and reservations, and reports each reservation that expired. */
@@ -467,10 +539,7 @@ final class Recruiter {
         st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
         st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
         st.refused.values().removeIf(r -> now - r.atMillis() >= refusalMillis());
-        st.parkedPolicyRequests.values().removeIf(parked -> {
-            parked.removeIf(p -> now - p.atMillis() > ctx.timing().failureTimeoutMillis());
-            return parked.isEmpty();
-        });
+        policies.expire(now);
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();
             if (o.pendingFor != null && now - o.pendingSince > ctx.pendingMillis()) {

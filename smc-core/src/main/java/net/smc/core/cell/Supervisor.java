@@ -45,6 +45,8 @@ final class Supervisor {
     private Cancellable rediscoveryDue;
     /** Whether the cell stopped: what fails as its communication stops asks for no rediscovery. */
     private boolean stopped;
+    /** The next early repeat of discovery while a seat stays open (see {@link #repeatDiscovery}), or null. */
+    private Cancellable repeatDue;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -176,21 +178,62 @@ final class Supervisor {
         if (open && !st.discovering) {
             ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
                     + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
+            repeatDiscovery(ctx.timing().senderSettings().initialTimeoutMillis());
         }
         st.discovering = open;
         return open;
     }
 
     /**
+     * Discovery and its replies travel unacknowledged: when either is lost, a seat would stay open
+     * until the next tick's discovery, a whole heartbeat period later, on every level of the tree
+     * below it. So, from each start of discovery, while a seat stays open it is discovered again
+     * after the first retransmission timeout of the critical messages, then after twice that, and so
+     * on while the wait is below a heartbeat period (100, 200 and 400 ms for a 500 ms period); from
+     * then on the tick discovers every period. Each repeat goes through {@link #rediscover}: none
+     * while capability requests are out, and within its rate limit.
+     */
+    private void repeatDiscovery(long afterMillis) {
+        if (repeatDue != null || stopped || afterMillis >= ctx.timing().comTimeoutMillis()) {
+            return;
+        }
+        repeatDue = ctx.scheduler().schedule(afterMillis, () -> {
+            repeatDue = null;
+            if (!stopped && !st.seats.isEmpty() && st.hasVacancy() && !st.recruitingHeld) {
+                rediscover();
+                repeatDiscovery(2 * afterMillis);
+            }
+        });
+    }
+
+    /**
      * Discovers at once when this cell has an open seat: a manager whose role has just started (or
      * a commander starting) looks for its children now rather than at its next tick, so a tree of
      * depth d forms without waiting up to d heartbeat periods. The tick goes on discovering every
-     * period while a seat stays open.
+     * period while a seat stays open. Returns whether it discovered.
      */
-    void discoverNow() {
+    boolean discoverNow() {
         if (!st.seats.isEmpty() && !st.owned.isEmpty() && noteDiscovering()) {
             merge.discover();
+            return true;
         }
+        return false;
+    }
+
+    /**
+     * This cell has just taken a role. When it discovered as the assignment arrived (Assignee),
+     * less than the first retransmission timeout ago, the answers may still be coming: its
+     * discovery starts (a DISCOVERING event, and its early repeats) without a second broadcast.
+     */
+    void roleStarted() {
+        long sinceEarly = ctx.clock().nowMillis() - st.earlyDiscoveryMillis;
+        if (sinceEarly < ctx.timing().senderSettings().initialTimeoutMillis()) {
+            if (!st.seats.isEmpty() && !st.owned.isEmpty()) {
+                noteDiscovering();
+            }
+            return;
+        }
+        discoverNow();
     }
 
     /**
@@ -200,7 +243,8 @@ final class Supervisor {
      * rediscovery would bring every one of them to answer again), and not within a quarter
      * heartbeat period of the last such discovery, so that vehicles refusing every offer cost at
      * most four extra discoveries a period: one asked for sooner runs when that quarter period has
-     * passed.
+     * passed. Only a discovery sent counts: a call that found no seat open (another vehicle is
+     * being given it) does not hold back the next.
      */
     void rediscover() {
         if (stopped || !st.capabilityRequests.isEmpty() || rediscoveryDue != null) {
@@ -209,8 +253,9 @@ final class Supervisor {
         long now = ctx.clock().nowMillis();
         long allowedAt = rediscoveredMillis + ctx.timing().comTimeoutMillis() / 4;
         if (now >= allowedAt) {
-            rediscoveredMillis = now;
-            discoverNow();
+            if (discoverNow()) {
+                rediscoveredMillis = now; // only a discovery sent counts against the limit
+            }
             return;
         }
         // Held back by the rate limit: discovers when the limit allows, not a period later at the tick.
@@ -226,6 +271,10 @@ final class Supervisor {
         if (rediscoveryDue != null) {
             rediscoveryDue.cancel();
             rediscoveryDue = null;
+        }
+        if (repeatDue != null) {
+            repeatDue.cancel();
+            repeatDue = null;
         }
     }
 

@@ -158,6 +158,27 @@ record TeamContext(String self, String missionId, Slots slots, Timing timing, lo
                 && r.authorisations().stream().allMatch(u -> store.get(u, PolicyStore.ANY_VERSION).isPresent());
     }
 
+    /** The policy files of {@code role} itself: its role-missions and authorisations. */
+    Set<String> ownPolicyUris(String role) {
+        MissionRole r = slots.role(role);
+        Set<String> own = new LinkedHashSet<>(r.policies());
+        own.addAll(r.authorisations());
+        return own;
+    }
+
+    /**
+     * The policy files a manager sends a vehicle right behind its assignment to {@code role}
+     * (Recruiter): the role's own, then those of the roles it manages directly, which the vehicle
+     * will send its own children. The files of the roles further down it fetches itself.
+     */
+    Set<String> policiesWithAssignment(String role) {
+        Set<String> files = ownPolicyUris(role);
+        for (String managed : slots.managedRoles(role)) {
+            files.addAll(ownPolicyUris(managed));
+        }
+        return files;
+    }
+
     /** The policy URIs of a role and of every role it manages, down the tree. */
     List<String> subtreePolicyUris(String role) {
         Set<String> uris = new LinkedHashSet<>();

@@ -273,9 +273,14 @@ final class TeamProtocol implements DiscoveryActions {
         tickTimer = ctx.scheduler().schedule(tickPhaseMillis, this::tick);
     }
 
-    /** This cell has just taken a role: as a manager, it discovers at once. */
+    /**
+     * This cell has just taken a role: as a manager, its policies decide on the vehicles that
+     * answered the discovery it sent as the assignment arrived, and it discovers at once unless
+     * that discovery's answers may still be coming.
+     */
     private void discoverNow() {
-        supervisor.discoverNow();
+        recruiter.takeUpEarlyReplies();
+        supervisor.roleStarted();
     }
 
     /** A seat this cell offered is open again: it discovers at once (at most four times a period). */

@@ -9,7 +9,6 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 
-import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.message.Identity;
 import net.smc.core.message.RoleAssignment;
@@ -80,6 +79,13 @@ final class TeamState {
      * (it fetches them after taking its role), by URI: answered when the file arrives (Recruiter).
      */
     final Map<String, List<ParkedRequest>> parkedPolicyRequests = new HashMap<>();
+    /**
+     * When this cell, taking a role that manages others, discovered as the assignment arrived, with
+     * the role's files still on their way (Assignee; far in the past: never), and the vehicles that
+     * answered before the role started, which its policies decide on once it has (Recruiter).
+     */
+    long earlyDiscoveryMillis = Long.MIN_VALUE / 2;
+    final Set<String> earlyReplies = new LinkedHashSet<>();
     /** Free vehicles this cell's policies passed over when they were discovered, by vehicle (Recruiter). */
     final Map<String, Refusal> refused = new HashMap<>();
     final Map<String, List<Object>> handover = new HashMap<>();
@@ -151,7 +157,11 @@ final class TeamState {
         Address address;
         long lastHeard;
         List<Seat> seats = List.of();
-        CapabilityDescription description;
+        /**
+         * What the vehicle presented of its capabilities (its resources and tasks: all a seat's
+         * requirement reads), from its discovery reply or its full description; null until known.
+         */
+        CapabilitySummary description;
         List<Object> state = List.of();
         Map<String, Integer> subtree;
         int size = 1;

@@ -52,13 +52,23 @@ class RefusedVehicleTest {
         return sim.cell(vehicle).seats().stream().anyMatch(s -> s.role().equals("surveyor"));
     }
 
+    /**
+     * A refusal holds for the open seats it was made for: a surveyor decided on while the
+     * aggregator's seat was still open is put to the policies once more when that seat is taken
+     * (seats are given as the discovery replies come, so which replies come before the aggregator's
+     * depends on the run), and then not again in twenty heartbeat periods.
+     */
     @Test
     void aRefusedVehicleAnsweringDiscoveryForTwentyRoundsIsPutToThePoliciesOnce() {
         TeamSimulation sim = team(41);
+        assertTrue(sim.runUntil(() -> sim.cell("a1").seats().stream().anyMatch(s -> s.role().equals("aggregator")), 2_000),
+                "the aggregator is recruited");
+        long s1Before = seenOf("s1");
+        long s2Before = seenOf("s2");
         sim.run(10_000); // twenty heartbeat periods, the surveyor seats open all along
-        assertTrue(sim.cell("a1").seats().stream().anyMatch(s -> s.role().equals("aggregator")), "the aggregator is recruited");
-        assertEquals(1, seenOf("s1"), "newUAV for s1, refused, in 10 s: " + seen);
-        assertEquals(1, seenOf("s2"), "newUAV for s2, refused, in 10 s: " + seen);
+        assertTrue(seenOf("s1") >= 1 && seenOf("s1") - s1Before <= 1, "newUAV for s1, refused, in 10 s: " + seen);
+        assertTrue(seenOf("s2") >= 1 && seenOf("s2") - s2Before <= 1, "newUAV for s2, refused, in 10 s: " + seen);
+        assertTrue(seenOf("s1") <= 2 && seenOf("s2") <= 2, "newUAV in 10 s: " + seen);
         assertTrue(!holdsSurveyor(sim, "s1") && !holdsSurveyor(sim, "s2"));
     }
 
