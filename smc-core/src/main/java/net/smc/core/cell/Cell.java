@@ -310,6 +310,19 @@ public final class Cell {
         return protocol.seats();
     }
 
+    /**
+     * Whether this vehicle holds exactly {@code seats}, in that order: what {@code seats().equals(seats)}
+     * says, without copying them (for checks that read a thousand cells often).
+     */
+    public boolean holdsSeats(List<Seat> seats) {
+        return protocol.holdsSeats(seats);
+    }
+
+    /** The vehicle id of this cell's parent, or null when it has none: {@link #parent()} without an Optional. */
+    public String parentOrNull() {
+        return protocol.parentOrNull();
+    }
+
     public Optional<Identity> identity() {
         return protocol.identity();
     }

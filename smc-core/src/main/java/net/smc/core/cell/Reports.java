@@ -169,6 +169,14 @@ final class Reports {
         return List.copyOf(st.seats);
     }
 
+    boolean holdsSeats(List<Seat> seats) {
+        return st.seats.equals(seats);
+    }
+
+    String parentOrNull() {
+        return st.parent == null ? null : st.parent.vehicle();
+    }
+
     Optional<Identity> identity() {
         return Optional.ofNullable(st.identity);
     }

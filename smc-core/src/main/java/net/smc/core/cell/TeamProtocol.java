@@ -368,6 +368,14 @@ final class TeamProtocol implements DiscoveryActions {
         return reports.seats();
     }
 
+    boolean holdsSeats(List<Seat> seats) {
+        return reports.holdsSeats(seats);
+    }
+
+    String parentOrNull() {
+        return reports.parentOrNull();
+    }
+
     Optional<Identity> identity() {
         return reports.identity();
     }
