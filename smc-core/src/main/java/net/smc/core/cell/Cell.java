@@ -323,6 +323,21 @@ public final class Cell {
         return protocol.parentOrNull();
     }
 
+    /**
+     * A number that grows whenever this cell's parent, command, lease, seats, children or their
+     * seats change, and only then: what a check of many cells reads to skip the unchanged ones.
+     * {@link #isSuspended()} may still turn true without it, once the clock passes
+     * {@link #leaseUntilMillis()}.
+     */
+    public long linkVersion() {
+        return protocol.linkVersion();
+    }
+
+    /** When the lease from the parent runs out, as of {@link #linkVersion()}: after it the cell is suspended. */
+    public long leaseUntilMillis() {
+        return protocol.leaseUntilMillis();
+    }
+
     public Optional<Identity> identity() {
         return protocol.identity();
     }

@@ -144,6 +144,7 @@ final class Membership {
             st.statusVersionFrom = from;
             // Seats granted by the old commander count again only once the new one has echoed a heartbeat.
             st.leaseUntilMillis = ctx.clock().nowMillis() - 1;
+            st.linksChanged();
             st.backupRank = -1;
             st.roster = null;
             reportCountdown = 0;
@@ -174,6 +175,7 @@ final class Membership {
         Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
         if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
             st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
+            st.linksChanged();
             st.lapseNoted = false;
         }
     }
@@ -187,6 +189,7 @@ final class Membership {
         }
         Child child = st.children.remove(from);
         if (child != null) {
+            st.linksChanged();
             seating.vacate(child);
             ctx.emit(CellEvent.Kind.LEFT, "child " + from + " left (" + l.reason() + "); vacated " + child.seats);
             counts.updateMissionState();

@@ -228,6 +228,7 @@ final class TeamProtocol implements DiscoveryActions {
             st.epoch = 0;
             st.commander = ctx.self();
             st.seats.add(seat);
+            st.linksChanged();
             st.identity = ctx.identityOf(seat);
             seating.recomputeOwnership();
             ctx.emit(CellEvent.Kind.COMMANDING, "acting commander of " + ctx.missionId() + " " + st.identity
@@ -264,6 +265,7 @@ final class TeamProtocol implements DiscoveryActions {
         ctx.emit(CellEvent.Kind.LEFT, "leaves the team");
         seating.dropEverything("left the team");
         st.acting = false;
+        st.linksChanged();
     }
 
     /** Ready to be discovered again after {@link #leave}. */
@@ -374,6 +376,14 @@ final class TeamProtocol implements DiscoveryActions {
 
     String parentOrNull() {
         return reports.parentOrNull();
+    }
+
+    long linkVersion() {
+        return st.linkVersion;
+    }
+
+    long leaseUntilMillis() {
+        return st.leaseUntilMillis;
     }
 
     Optional<Identity> identity() {

@@ -25,6 +25,14 @@ import net.smc.core.transport.Address;
 final class TeamState {
     private final TeamContext ctx;
 
+    /**
+     * Grows whenever what places this cell in the tree changes: {@link #parent}, {@link #acting},
+     * {@link #leaseUntilMillis}, {@link #seats}, and as a manager which children it has and their
+     * seats. Every writer of those calls {@link #linksChanged()}; checks that read a thousand cells
+     * (a simulation's invariants) re-read only the cells whose version moved.
+     */
+    long linkVersion;
+
     // Where this cell stands (written by Assignee, Membership, BackupCommander, Merge, Seating).
     boolean acting;
     long epoch;
@@ -178,6 +186,11 @@ final class TeamState {
 
     TeamState(TeamContext ctx) {
         this.ctx = ctx;
+    }
+
+    /** Records a change of the parent, command, lease, seats, children or their seats (see {@link #linkVersion}). */
+    void linksChanged() {
+        linkVersion++;
     }
 
     /** Free: no parent, no role, not commanding, not taking a role. */

@@ -8,6 +8,7 @@ import java.util.Objects;
 import java.util.function.BiPredicate;
 import java.util.function.Function;
 import java.util.function.Predicate;
+import java.util.function.ToLongFunction;
 
 import net.smc.core.cell.Cell;
 import net.smc.core.cell.Seat;
@@ -16,99 +17,111 @@ import net.smc.core.cell.Seat;
  * Everything the structural invariant rules (no cycle, no seat with two holders in a team, no slot
  * beyond its role's cardinality, every attached holder capable) read of the live cells, kept from
  * one check to the next: which cells are live, each one's parent, whether it acts as commander,
- * whether its lease ran out, whether its parent lists it as a child, and the seats it holds. Those
- * rules are functions of these readings alone (the mission and the vehicles' kits are fixed), so
- * when a check reads exactly what the last <em>passed</em> check read, they hold again and need not
- * be walked: an idle team re-reads a few fields per cell instead of building maps and walking the
- * tree every 50 ms. Any change, in any cell, makes {@link #read} say so, and the rules are walked
- * in full. The time-bound rules (dangling leases, commanders that hear each other) are evaluated
- * at every check from these readings ({@link #parent}, {@link #acting}, ...).
+ * whether its lease ran out, whether its parent lists it as a child, and the seats it holds.
+ *
+ * <p><b>Driven by the cells' changes.</b> A cell's {@linkplain Cell#linkVersion() link version}
+ * grows whenever its parent, command, lease, seats, children or their seats change. A check reads
+ * each cell's version and re-reads only the cells whose version moved, and whether a cell is listed
+ * by its parent only when the cell or its parent moved. The one reading that changes with time alone
+ * is the lease: a cell whose lease ran out since ({@code now > leaseUntil}, as last read) is asked
+ * again whether it is suspended. With {@link #verifying} on, every check also reads every cell in
+ * full and fails, naming the cell and the reading, if the incremental readings differ (for tests:
+ * a writer that forgot to move the version would show there).
+ *
+ * <p><b>Skipping the walk.</b> The structural rules are functions of these readings alone (the
+ * mission and the vehicles' kits are fixed), so when a check reads exactly what the last
+ * <em>passed</em> check read ({@link #read} returns false), they hold again and need not be walked.
+ * The time-bound rules (dangling leases, commanders that hear each other) are evaluated at every
+ * check from the readings ({@link #parent}, {@link #acting}, ...).
  *
  * <p>Generic in what a cell is ({@link Cell} in a simulation, a stand-in in tests).
  *
  * @param <C> the cells
  */
 final class CellReadings<C> {
-    private final Function<C, String> vehicleOf;
-    private final Function<C, String> parentOf;
-    private final Predicate<C> actingOf;
-    private final Predicate<C> suspendedOf;
-    private final BiPredicate<C, String> hasChild;
-    private final Function<C, List<Seat>> seatsOf;
-    private final BiPredicate<C, List<Seat>> holdsSeats;
+    /** What is read of one cell. */
+    record Reader<C>(Function<C, String> vehicle, ToLongFunction<C> version, Function<C, String> parent,
+                     Predicate<C> acting, Predicate<C> suspended, ToLongFunction<C> leaseUntil,
+                     BiPredicate<C, String> hasChild, Function<C, List<Seat>> seats, BiPredicate<C, List<Seat>> holdsSeats) {
+    }
+
+    private final Reader<C> reader;
+    private boolean verifying;
 
     private List<C> cells = List.of();
     private final List<C> live = new ArrayList<>();
     private final Map<String, Integer> index = new HashMap<>();
     private String[] vehicle = new String[0];
+    private long[] version = new long[0];
     private String[] parent = new String[0];
+    /** The parent's index among the live cells, -1 when none or not live. */
+    private int[] up = new int[0];
     private boolean[] acting = new boolean[0];
     private boolean[] suspended = new boolean[0];
+    private long[] leaseUntil = new long[0];
     private boolean[] listed = new boolean[0];
+    private boolean[] moved = new boolean[0];
     private List<List<Seat>> seats = new ArrayList<>();
     /** Whether the structural rules passed on the readings as they stand. */
     private boolean passed;
+    private long reread;
 
     /** The readings of live simulated cells. */
     static CellReadings<Cell> ofCells() {
-        return new CellReadings<>(Cell::vehicle, Cell::parentOrNull, Cell::isActingCommander, Cell::isSuspended,
-                Cell::hasChild, Cell::seats, Cell::holdsSeats);
+        return new CellReadings<>(new Reader<>(Cell::vehicle, Cell::linkVersion, Cell::parentOrNull,
+                Cell::isActingCommander, Cell::isSuspended, Cell::leaseUntilMillis, Cell::hasChild, Cell::seats,
+                Cell::holdsSeats));
+    }
+
+    CellReadings(Reader<C> reader) {
+        this.reader = reader;
+    }
+
+    /** With {@code on}, every {@link #read} checks its readings against a full read of every cell. */
+    CellReadings<C> verifying(boolean on) {
+        this.verifying = on;
+        return this;
     }
 
     /**
-     * @param parentOf   a cell's parent as it names it, or null
-     * @param hasChild   whether a cell lists the vehicle as its child
-     * @param seatsOf    a copy of the seats a cell holds
-     * @param holdsSeats whether a cell holds exactly the seats given (as {@code seatsOf(c).equals(seats)})
-     */
-    CellReadings(Function<C, String> vehicleOf, Function<C, String> parentOf, Predicate<C> actingOf,
-                 Predicate<C> suspendedOf, BiPredicate<C, String> hasChild, Function<C, List<Seat>> seatsOf,
-                 BiPredicate<C, List<Seat>> holdsSeats) {
-        this.vehicleOf = vehicleOf;
-        this.parentOf = parentOf;
-        this.actingOf = actingOf;
-        this.suspendedOf = suspendedOf;
-        this.hasChild = hasChild;
-        this.seatsOf = seatsOf;
-        this.holdsSeats = holdsSeats;
-    }
-
-    /**
-     * Reads every cell of {@code now} (the live cells, in the simulation's order).
+     * Brings the readings up to date with {@code now} (the live cells, in the simulation's order) at
+     * time {@code nowMillis}.
      *
      * @return whether the structural rules must be walked: something differs from the readings of
      *     the last check that {@linkplain #passed() passed} them, or none did yet
      */
-    boolean read(List<C> now) {
+    boolean read(List<C> now, long nowMillis) {
         boolean same = sameCells(now);
-        if (!same) {
+        boolean all = !same;
+        if (all) {
             adopt(now);
         }
         int n = live.size();
         for (int i = 0; i < n; i++) {
             C c = live.get(i);
-            String p = parentOf.apply(c);
-            if (!Objects.equals(p, parent[i])) {
-                parent[i] = p;
+            long v = reader.version.applyAsLong(c);
+            moved[i] = all || v != version[i];
+            if (moved[i]) {
+                version[i] = v;
+                reread++;
+                same &= readOwn(i, c);
+            } else if (parent[i] != null && !acting[i] && !suspended[i] && nowMillis > leaseUntil[i]
+                    && reader.suspended.test(c)) {
+                suspended[i] = true;   // the lease ran out with time alone
                 same = false;
             }
-            boolean a = actingOf.test(c);
-            boolean s = suspendedOf.test(c);
-            if (a != acting[i] || s != suspended[i]) {
-                acting[i] = a;
-                suspended[i] = s;
-                same = false;
+        }
+        for (int i = 0; i < n; i++) {
+            if (moved[i] || up[i] >= 0 && moved[up[i]]) {
+                boolean l = up[i] >= 0 && reader.hasChild.test(live.get(up[i]), vehicle[i]);
+                if (l != listed[i]) {
+                    listed[i] = l;
+                    same = false;
+                }
             }
-            Integer up = p == null ? null : index.get(p);
-            boolean l = up != null && hasChild.test(live.get(up), vehicle[i]);
-            if (l != listed[i]) {
-                listed[i] = l;
-                same = false;
-            }
-            if (!holdsSeats.test(c, seats.get(i))) {
-                seats.set(i, List.copyOf(seatsOf.apply(c)));
-                same = false;
-            }
+        }
+        if (verifying) {
+            verify(nowMillis);
         }
         if (!same) {
             passed = false;
@@ -116,9 +129,58 @@ final class CellReadings<C> {
         return !passed;
     }
 
+    /** Re-reads cell {@code i}'s own fields; returns whether they are as they were. */
+    private boolean readOwn(int i, C c) {
+        boolean same = true;
+        String p = reader.parent.apply(c);
+        if (!Objects.equals(p, parent[i])) {
+            parent[i] = p;
+            Integer at = p == null ? null : index.get(p);
+            up[i] = at == null ? -1 : at;
+            same = false;
+        }
+        boolean a = reader.acting.test(c);
+        boolean s = reader.suspended.test(c);
+        if (a != acting[i] || s != suspended[i]) {
+            acting[i] = a;
+            suspended[i] = s;
+            same = false;
+        }
+        leaseUntil[i] = reader.leaseUntil.applyAsLong(c);
+        if (!reader.holdsSeats.test(c, seats.get(i))) {
+            seats.set(i, List.copyOf(reader.seats.apply(c)));
+            same = false;
+        }
+        return same;
+    }
+
+    private void verify(long nowMillis) {
+        for (int i = 0; i < live.size(); i++) {
+            C c = live.get(i);
+            String p = reader.parent.apply(c);
+            Integer at = p == null ? null : index.get(p);
+            boolean l = at != null && reader.hasChild.test(live.get(at), vehicle[i]);
+            String wrong = !Objects.equals(p, parent[i]) ? "parent " + p + " read as " + parent[i]
+                    : reader.acting.test(c) != acting[i] ? "command"
+                    : reader.suspended.test(c) != suspended[i] ? "suspension at " + nowMillis
+                    : l != listed[i] ? "listed by its parent: " + l
+                    : !reader.holdsSeats.test(c, seats.get(i)) ? "seats " + reader.seats.apply(c) + " read as " + seats.get(i)
+                    : null;
+            if (wrong != null) {
+                throw new IllegalStateException("the incremental readings of " + vehicle[i] + " are stale: " + wrong
+                        + " (link version " + version[i] + "): a writer of its links did not move the version");
+            }
+        }
+    }
+
     /** Records that the structural rules held on the readings as they stand. */
     void passed() {
         passed = true;
+    }
+
+    /** Cells re-read so far because their version moved (or the live cells changed). */
+    long reread() {
+        return reread;
     }
 
     private boolean sameCells(List<C> now) {
@@ -133,7 +195,7 @@ final class CellReadings<C> {
         return true;
     }
 
-    /** A new set of live cells: everything is read afresh (null parents and empty seats are re-read below). */
+    /** A new set of live cells: every reading starts empty, and every cell is read afresh. */
     private void adopt(List<C> now) {
         cells = now;
         live.clear();
@@ -141,15 +203,20 @@ final class CellReadings<C> {
         int n = now.size();
         index.clear();
         vehicle = new String[n];
+        version = new long[n];
         parent = new String[n];
+        up = new int[n];
         acting = new boolean[n];
         suspended = new boolean[n];
+        leaseUntil = new long[n];
         listed = new boolean[n];
+        moved = new boolean[n];
         seats = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
-            vehicle[i] = vehicleOf.apply(now.get(i));
+            vehicle[i] = reader.vehicle.apply(now.get(i));
             index.put(vehicle[i], i);
             seats.add(List.of());
+            up[i] = -1;
         }
         passed = false;
     }

@@ -56,13 +56,14 @@ public final class TeamInvariants {
     /** The roles each vehicle's description has been found to meet the requirement of (both fixed). */
     private final Map<String, Set<String>> meets = new HashMap<>();
     /** What the last check read of the cells, and whether the structural rules passed on it. */
-    private final CellReadings<Cell> readings = CellReadings.ofCells();
+    private final CellReadings<Cell> readings;
     private long checks;
     private long structuralWalks;
 
-    TeamInvariants(TeamSimulation sim, long mergeBoundMillis) {
+    TeamInvariants(TeamSimulation sim, long mergeBoundMillis, boolean verifyingReadings) {
         this.sim = sim;
         this.mergeBoundMillis = mergeBoundMillis;
+        this.readings = CellReadings.ofCells().verifying(verifyingReadings);
     }
 
     /** The merge bound in use: given, or ten beacon periods (tolerates heavy loss) plus a failure timeout. */
@@ -86,7 +87,7 @@ public final class TeamInvariants {
     void check() {
         checks++;
         List<Cell> cells = sim.cells();
-        if (readings.read(cells)) {
+        if (readings.read(cells, sim.nowMillis())) {
             checkStructure(cells);
             readings.passed();
             structuralWalks++;

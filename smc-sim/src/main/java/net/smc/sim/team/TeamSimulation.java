@@ -129,7 +129,7 @@ public final class TeamSimulation implements CellTeam {
         this.listener = b.listener;
         this.trust = SimIdentities.trust(mission.instanceName());
         this.ideal = new IdealAuthentication(trust, sim);
-        this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
+        this.invariants = new TeamInvariants(this, b.mergeBoundMillis, b.verifyingReadings);
         this.checking = b.checking;
         this.output = b.output;
         this.world = b.arena == null ? null : new WorldTeam(this, SimWorld.builder(b.arena, sim).seed(seed).radio(b.radio).robotSpec(b.robotSpec).build(),

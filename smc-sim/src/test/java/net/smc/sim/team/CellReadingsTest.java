@@ -3,30 +3,37 @@ package net.smc.sim.team;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.function.Consumer;
+import java.util.function.Function;
 
 import net.smc.core.cell.Seat;
 import org.junit.jupiter.api.Test;
 
 /**
- * The readings the invariant checks keep between checks: a check may skip the structural rules only
- * when every cell reads exactly as at the last check that passed them; a change of any reading in
- * any cell (parent, command, lease, being listed by the parent, seats, which cells are live) makes
- * the next check walk them, and so does a walk that did not pass.
+ * The readings the invariant checks keep between checks, driven by the cells' link versions: a check
+ * re-reads a cell when its version moved (and whether it is listed when it or its parent moved), and
+ * a cell whose lease ran out with time alone; it may skip the structural rules only when every
+ * reading is as at the last check that passed them. Every test here runs with the full read that
+ * verifies the incremental one on, and one shows that a change made without moving the version is
+ * caught by it.
  */
 class CellReadingsTest {
-    /** A stand-in cell whose fields a test changes between checks. */
-    private static final class Node {
+    /** The stand-in cells' clock. */
+    private long now;
+
+    /** A stand-in cell whose fields a test changes between checks (moving its version, as a cell's writers do). */
+    private final class Node {
         final String vehicle;
+        long version;
+        long leaseUntil = Long.MAX_VALUE;
         String parent;
         boolean acting;
-        boolean suspended;
         final Set<String> children = new HashSet<>();
         List<Seat> seats = new ArrayList<>();
 
@@ -35,11 +42,16 @@ class CellReadingsTest {
             this.parent = parent;
             this.seats.addAll(List.of(seats));
         }
+
+        boolean suspended() {
+            return parent != null && !acting && now > leaseUntil;
+        }
     }
 
-    private static CellReadings<Node> readings() {
-        return new CellReadings<>(n -> n.vehicle, n -> n.parent, n -> n.acting, n -> n.suspended,
-                (n, v) -> n.children.contains(v), n -> List.copyOf(n.seats), (n, s) -> n.seats.equals(s));
+    private CellReadings<Node> readings() {
+        return new CellReadings<>(new CellReadings.Reader<Node>(n -> n.vehicle, n -> n.version, n -> n.parent,
+                n -> n.acting, Node::suspended, n -> n.leaseUntil, (n, v) -> n.children.contains(v),
+                n -> List.copyOf(n.seats), (n, s) -> n.seats.equals(s))).verifying(true);
     }
 
     private List<Node> team() {
@@ -53,32 +65,57 @@ class CellReadingsTest {
     }
 
     /** Reads, records a passed walk, and checks that an unchanged team needs no walk. */
-    private static void settle(CellReadings<Node> r, List<Node> cells) {
-        assertTrue(r.read(cells), "a new reading needs a walk");
+    private void settle(CellReadings<Node> r, List<Node> cells) {
+        assertTrue(r.read(cells, now), "a new reading needs a walk");
         r.passed();
-        assertFalse(r.read(cells), "nothing changed since a passed walk");
+        assertFalse(r.read(cells, now), "nothing changed since a passed walk");
     }
 
-    private void assertChangeIsSeen(String what, Consumer<List<Node>> change) {
+    /** {@code change} changes one cell and returns it; its version moves. */
+    private void assertChangeIsSeen(String what, Function<List<Node>, Node> change) {
         List<Node> cells = team();
         CellReadings<Node> r = readings();
         settle(r, cells);
-        change.accept(cells);
-        assertTrue(r.read(cells), what + " must make the next check walk the rules");
+        change.apply(cells).version++;
+        assertTrue(r.read(cells, now), what + " must make the next check walk the rules");
         r.passed();
-        assertFalse(r.read(cells), what + ": read again after a passed walk, nothing new");
+        assertFalse(r.read(cells, now), what + ": read again after a passed walk, nothing new");
     }
 
     @Test
     void everyKindOfChangeInAnyCellIsSeen() {
-        assertChangeIsSeen("a new parent", c -> c.get(2).parent = "cdr");
-        assertChangeIsSeen("losing the parent", c -> c.get(1).parent = null);
-        assertChangeIsSeen("taking command", c -> c.get(1).acting = true);
-        assertChangeIsSeen("a lease running out", c -> c.get(2).suspended = true);
-        assertChangeIsSeen("a parent dropping its child", c -> c.get(1).children.remove("b"));
-        assertChangeIsSeen("a seat more", c -> c.get(2).seats.add(new Seat("surveyor", 0)));
-        assertChangeIsSeen("another slot of the same role", c -> c.get(2).seats.set(0, new Seat("detector", 1)));
-        assertChangeIsSeen("no seat", c -> c.get(1).seats.clear());
+        assertChangeIsSeen("a new parent", c -> set(c.get(2), n -> n.parent = "cdr"));
+        assertChangeIsSeen("losing the parent", c -> set(c.get(1), n -> n.parent = null));
+        assertChangeIsSeen("taking command", c -> set(c.get(1), n -> n.acting = true));
+        assertChangeIsSeen("a lease cut short", c -> set(c.get(2), n -> n.leaseUntil = now - 1));
+        assertChangeIsSeen("a parent dropping its child", c -> set(c.get(1), n -> n.children.remove("b")));
+        assertChangeIsSeen("a seat more", c -> set(c.get(2), n -> n.seats.add(new Seat("surveyor", 0))));
+        assertChangeIsSeen("another slot of the same role", c -> set(c.get(2), n -> n.seats.set(0, new Seat("detector", 1))));
+        assertChangeIsSeen("no seat", c -> set(c.get(1), n -> n.seats.clear()));
+    }
+
+    private static Node set(Node n, java.util.function.Consumer<Node> change) {
+        change.accept(n);
+        return n;
+    }
+
+    @Test
+    void aLeaseRunningOutWithTimeAloneIsSeen() {
+        List<Node> cells = team();
+        cells.get(2).leaseUntil = 1_000;
+        now = 500;
+        CellReadings<Node> r = readings();
+        settle(r, cells);
+        now = 1_000;
+        assertFalse(r.read(cells, now), "the lease runs until 1,000 ms");
+        now = 1_001;
+        assertTrue(r.read(cells, now), "no version moved, but b's lease ran out");
+        assertTrue(r.suspended(2));
+        r.passed();
+        cells.get(2).leaseUntil = 3_000;   // renewed
+        cells.get(2).version++;
+        assertTrue(r.read(cells, now));
+        assertFalse(r.suspended(2));
     }
 
     @Test
@@ -88,9 +125,22 @@ class CellReadingsTest {
         CellReadings<Node> r = readings();
         settle(r, cells);
         cells.get(0).children.add("b");   // not b's parent: nothing the rules read
-        assertFalse(r.read(cells));
+        cells.get(0).version++;
+        assertFalse(r.read(cells, now));
         cells.get(1).children.add("b");
-        assertTrue(r.read(cells), "b's parent lists it now");
+        cells.get(1).version++;
+        assertTrue(r.read(cells, now), "b's parent lists it now");
+        assertTrue(r.listedByParent(2));
+    }
+
+    @Test
+    void aChangeThatDoesNotMoveTheVersionIsCaughtByTheVerifyingRead() {
+        List<Node> cells = team();
+        CellReadings<Node> r = readings();
+        settle(r, cells);
+        cells.get(2).seats.add(new Seat("surveyor", 1));   // version not moved: a writer that forgot
+        IllegalStateException e = assertThrows(IllegalStateException.class, () -> r.read(cells, now));
+        assertTrue(e.getMessage().contains("incremental readings of b are stale: seats"), e.getMessage());
     }
 
     @Test
@@ -98,30 +148,30 @@ class CellReadingsTest {
         List<Node> cells = team();
         CellReadings<Node> r = readings();
         settle(r, cells);
-        assertTrue(r.read(List.of(cells.get(0), cells.get(1))), "a cell gone");
+        assertTrue(r.read(List.of(cells.get(0), cells.get(1)), now), "a cell gone");
         r.passed();
-        assertTrue(r.read(cells), "a cell back");
+        assertTrue(r.read(cells, now), "a cell back");
         r.passed();
         List<Node> restarted = List.of(cells.get(0), cells.get(1), new Node("b", "a", new Seat("detector", 0)));
-        assertTrue(r.read(restarted), "a cell replaced by a fresh one of the same vehicle");
+        assertTrue(r.read(restarted, now), "a cell replaced by a fresh one of the same vehicle");
     }
 
     @Test
     void aWalkThatDidNotPassIsWalkedAgain() {
         List<Node> cells = team();
         CellReadings<Node> r = readings();
-        assertTrue(r.read(cells));
+        assertTrue(r.read(cells, now));
         // No passed(): the walk found a violation (and threw); whoever goes on checks again.
-        assertTrue(r.read(cells), "readings no walk has passed on are never trusted");
+        assertTrue(r.read(cells, now), "readings no walk has passed on are never trusted");
     }
 
     @Test
     void theReadingsAreWhatTheCellsSay() {
         List<Node> cells = new ArrayList<>(team());
         cells.add(new Node("d", "gone", new Seat("detector", 1)));   // its parent is not live
-        cells.get(2).suspended = true;
+        cells.get(2).leaseUntil = now - 1;
         CellReadings<Node> r = readings();
-        r.read(cells);
+        r.read(cells, now);
         assertEquals(4, r.size());
         assertTrue(r.acting(0));
         assertNull(r.parent(0));
