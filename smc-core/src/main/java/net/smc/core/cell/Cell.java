@@ -324,16 +324,22 @@ public final class Cell {
     }
 
     /**
-     * A number that grows whenever this cell's parent, command, lease, seats, children or their
-     * seats change, and only then: what a check of many cells reads to skip the unchanged ones.
-     * {@link #isSuspended()} may still turn true without it, once the clock passes
-     * {@link #leaseUntilMillis()}.
+     * A number that grows whenever this cell's parent, command, seats, children or their seats
+     * change, or its lease is set other than by a renewal that only moves its end later: what a
+     * check of many cells reads to skip the unchanged ones. Without it moving, {@link #isSuspended()}
+     * may turn true once the clock passes {@link #leaseUntilMillis()}, and false again when the
+     * lease is renewed; {@link #leaseUntilMillis()} may grow.
      */
     public long linkVersion() {
+        return protocol.linkVersion().getAsLong();
+    }
+
+    /** Reads {@link #linkVersion()} whenever asked, more cheaply than through the cell. */
+    public java.util.function.LongSupplier linkVersionSource() {
         return protocol.linkVersion();
     }
 
-    /** When the lease from the parent runs out, as of {@link #linkVersion()}: after it the cell is suspended. */
+    /** When the lease from the parent runs out: after it the cell is suspended (until renewed). */
     public long leaseUntilMillis() {
         return protocol.leaseUntilMillis();
     }

@@ -174,8 +174,7 @@ final class Membership {
         unconfirmed = tag == 0;
         Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
         if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
-            st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
-            st.linksChanged();
+            st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();   // a later end only: see TeamState.linkVersion
             st.lapseNoted = false;
         }
     }

@@ -378,7 +378,7 @@ final class TeamProtocol implements DiscoveryActions {
         return reports.parentOrNull();
     }
 
-    long linkVersion() {
+    java.util.function.LongSupplier linkVersion() {
         return st.linkVersion;
     }
 

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.function.LongSupplier;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
@@ -27,11 +28,14 @@ final class TeamState {
 
     /**
      * Grows whenever what places this cell in the tree changes: {@link #parent}, {@link #acting},
-     * {@link #leaseUntilMillis}, {@link #seats}, and as a manager which children it has and their
-     * seats. Every writer of those calls {@link #linksChanged()}; checks that read a thousand cells
-     * (a simulation's invariants) re-read only the cells whose version moved.
+     * {@link #seats}, {@link #leaseUntilMillis} (but for a renewal that only moves its end later:
+     * a reader that finds the end it read has passed reads it again), and as a manager which
+     * children it has and their seats. Every writer of those calls {@link #linksChanged()}; checks
+     * that read a thousand cells (a simulation's invariants) re-read only the cells whose version
+     * moved. An object of its own,
+     * so that such a check reads it without walking from the cell to this state.
      */
-    long linkVersion;
+    final LinkVersion linkVersion = new LinkVersion();
 
     // Where this cell stands (written by Assignee, Membership, BackupCommander, Merge, Seating).
     boolean acting;
@@ -190,7 +194,17 @@ final class TeamState {
 
     /** Records a change of the parent, command, lease, seats, children or their seats (see {@link #linkVersion}). */
     void linksChanged() {
-        linkVersion++;
+        linkVersion.value++;
+    }
+
+    /** {@link #linkVersion}'s counter. */
+    static final class LinkVersion implements LongSupplier {
+        private long value;
+
+        @Override
+        public long getAsLong() {
+            return value;
+        }
     }
 
     /** Free: no parent, no role, not commanding, not taking a role. */

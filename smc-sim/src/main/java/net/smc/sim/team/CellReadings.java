@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.function.BiPredicate;
 import java.util.function.Function;
+import java.util.function.LongSupplier;
 import java.util.function.Predicate;
 import java.util.function.ToLongFunction;
 
@@ -20,11 +21,12 @@ import net.smc.core.cell.Seat;
  * whether its lease ran out, whether its parent lists it as a child, and the seats it holds.
  *
  * <p><b>Driven by the cells' changes.</b> A cell's {@linkplain Cell#linkVersion() link version}
- * grows whenever its parent, command, lease, seats, children or their seats change. A check reads
- * each cell's version and re-reads only the cells whose version moved, and whether a cell is listed
- * by its parent only when the cell or its parent moved. The one reading that changes with time alone
- * is the lease: a cell whose lease ran out since ({@code now > leaseUntil}, as last read) is asked
- * again whether it is suspended. With {@link #verifying} on, every check also reads every cell in
+ * grows whenever its parent, command, seats, children or their seats change, or its lease is set
+ * other than by a renewal. A check reads each cell's version and re-reads only the cells whose
+ * version moved, and whether a cell is listed by its parent only when the cell or its parent moved.
+ * The lease is the one reading that changes without the version: a cell whose lease, as last read,
+ * has run out ({@code now > leaseUntil}), or that was suspended, is read again (its lease was
+ * renewed, or it lapsed). With {@link #verifying} on, every check also reads every cell in
  * full and fails, naming the cell and the reading, if the incremental readings differ (for tests:
  * a writer that forgot to move the version would show there).
  *
@@ -40,7 +42,7 @@ import net.smc.core.cell.Seat;
  */
 final class CellReadings<C> {
     /** What is read of one cell. */
-    record Reader<C>(Function<C, String> vehicle, ToLongFunction<C> version, Function<C, String> parent,
+    record Reader<C>(Function<C, String> vehicle, Function<C, LongSupplier> version, Function<C, String> parent,
                      Predicate<C> acting, Predicate<C> suspended, ToLongFunction<C> leaseUntil,
                      BiPredicate<C, String> hasChild, Function<C, List<Seat>> seats, BiPredicate<C, List<Seat>> holdsSeats) {
     }
@@ -53,6 +55,8 @@ final class CellReadings<C> {
     private final Map<String, Integer> index = new HashMap<>();
     private String[] vehicle = new String[0];
     private long[] version = new long[0];
+    /** Where each cell's link version is read (fetched once per live cell). */
+    private LongSupplier[] versionOf = new LongSupplier[0];
     private String[] parent = new String[0];
     /** The parent's index among the live cells, -1 when none or not live. */
     private int[] up = new int[0];
@@ -68,7 +72,7 @@ final class CellReadings<C> {
 
     /** The readings of live simulated cells. */
     static CellReadings<Cell> ofCells() {
-        return new CellReadings<>(new Reader<>(Cell::vehicle, Cell::linkVersion, Cell::parentOrNull,
+        return new CellReadings<>(new Reader<>(Cell::vehicle, Cell::linkVersionSource, Cell::parentOrNull,
                 Cell::isActingCommander, Cell::isSuspended, Cell::leaseUntilMillis, Cell::hasChild, Cell::seats,
                 Cell::holdsSeats));
     }
@@ -99,16 +103,20 @@ final class CellReadings<C> {
         int n = live.size();
         for (int i = 0; i < n; i++) {
             C c = live.get(i);
-            long v = reader.version.applyAsLong(c);
+            long v = versionOf[i].getAsLong();
             moved[i] = all || v != version[i];
             if (moved[i]) {
                 version[i] = v;
                 reread++;
                 same &= readOwn(i, c);
-            } else if (parent[i] != null && !acting[i] && !suspended[i] && nowMillis > leaseUntil[i]
-                    && reader.suspended.test(c)) {
-                suspended[i] = true;   // the lease ran out with time alone
-                same = false;
+            } else if (parent[i] != null && !acting[i] && (suspended[i] || nowMillis > leaseUntil[i])) {
+                // The lease read has run out: renewed since (a renewal moves no version), or lapsed.
+                leaseUntil[i] = reader.leaseUntil.applyAsLong(c);
+                boolean s = reader.suspended.test(c);
+                if (s != suspended[i]) {
+                    suspended[i] = s;
+                    same = false;
+                }
             }
         }
         for (int i = 0; i < n; i++) {
@@ -184,6 +192,9 @@ final class CellReadings<C> {
     }
 
     private boolean sameCells(List<C> now) {
+        if (now == cells) {
+            return true;   // the same list: callers pass lists they do not change
+        }
         if (now.size() != live.size()) {
             return false;
         }
@@ -204,6 +215,7 @@ final class CellReadings<C> {
         index.clear();
         vehicle = new String[n];
         version = new long[n];
+        versionOf = new LongSupplier[n];
         parent = new String[n];
         up = new int[n];
         acting = new boolean[n];
@@ -214,6 +226,7 @@ final class CellReadings<C> {
         seats = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
             vehicle[i] = reader.vehicle.apply(now.get(i));
+            versionOf[i] = reader.version.apply(now.get(i));
             index.put(vehicle[i], i);
             seats.add(List.of());
             up[i] = -1;

@@ -179,10 +179,7 @@ public final class TeamInvariants {
     }
 
     private void checkRogues(List<Cell> honest) {
-        for (SimVehicle v : sim.vehicles()) {
-            if (!v.rogue()) {
-                continue;
-            }
+        for (SimVehicle v : sim.rogues()) {
             Cell rogue = sim.cell(v.id());
             if (rogue != null && !v.commander() && !rogue.seats().isEmpty()) {
                 fail("rogue " + v.id() + " holds " + rogue.seats());

@@ -101,6 +101,10 @@ public final class TeamSimulation implements CellTeam {
     private final ParsedUnits parsedUnits = new ParsedUnits(1_024, 16_384);
     private final BiConsumer<String, String> output;
     private int nextPort = 5000;
+    /** {@link #cells()} as it stands, made again after a cell is booted or crashed (null: to make). */
+    private List<Cell> liveCells;
+    /** {@link #rogues()} as it stands, made again after a vehicle is added (null: to make). */
+    private List<SimVehicle> rogues;
     private long restarts;
 
     /** One vehicle: its spec, address, and its current cell (null while crashed). */
@@ -190,6 +194,7 @@ public final class TeamSimulation implements CellTeam {
         }
         Node n = new Node(v, Address.loopback(nextPort++));
         nodes.put(v.id(), n);
+        rogues = null;
         if (world != null) {
             world.bind(v.id(), n.address);
         }
@@ -217,6 +222,7 @@ public final class TeamSimulation implements CellTeam {
             b.scheme(scheme);
         }
         n.cell = b.build();
+        liveCells = null;
         if (world != null) {
             world.install(n.spec.id(), n.cell);
         }
@@ -236,6 +242,7 @@ public final class TeamSimulation implements CellTeam {
         n.cell.stop();
         network.crash(n.address);
         n.cell = null;
+        liveCells = null;
         record(new CellEvent(sim.nowMillis(), vehicle, CellEvent.Kind.LEFT, "*** crashed"));
     }
 
@@ -344,12 +351,23 @@ public final class TeamSimulation implements CellTeam {
 
     /** Live cells of honest vehicles. */
     public List<Cell> cells() {
-        return nodes.values().stream().filter(n -> n.cell != null && !n.spec.rogue()).map(n -> n.cell).toList();
+        if (liveCells == null) {
+            liveCells = nodes.values().stream().filter(n -> n.cell != null && !n.spec.rogue()).map(n -> n.cell).toList();
+        }
+        return liveCells;
     }
 
     @Override
     public Collection<SimVehicle> vehicles() {
         return nodes.values().stream().map(n -> n.spec).toList();
+    }
+
+    /** The rogue vehicles among {@link #vehicles()}. */
+    List<SimVehicle> rogues() {
+        if (rogues == null) {
+            rogues = nodes.values().stream().map(n -> n.spec).filter(SimVehicle::rogue).toList();
+        }
+        return rogues;
     }
 
     @Override

@@ -49,7 +49,7 @@ class CellReadingsTest {
     }
 
     private CellReadings<Node> readings() {
-        return new CellReadings<>(new CellReadings.Reader<Node>(n -> n.vehicle, n -> n.version, n -> n.parent,
+        return new CellReadings<>(new CellReadings.Reader<Node>(n -> n.vehicle, n -> () -> n.version, n -> n.parent,
                 n -> n.acting, Node::suspended, n -> n.leaseUntil, (n, v) -> n.children.contains(v),
                 n -> List.copyOf(n.seats), (n, s) -> n.seats.equals(s))).verifying(true);
     }
@@ -100,21 +100,22 @@ class CellReadingsTest {
     }
 
     @Test
-    void aLeaseRunningOutWithTimeAloneIsSeen() {
+    void aLeaseRunningOutWithTimeAlone_orRenewedWithoutAVersion_isSeen() {
         List<Node> cells = team();
         cells.get(2).leaseUntil = 1_000;
         now = 500;
         CellReadings<Node> r = readings();
         settle(r, cells);
-        now = 1_000;
-        assertFalse(r.read(cells, now), "the lease runs until 1,000 ms");
-        now = 1_001;
+        cells.get(2).leaseUntil = 1_200;   // renewed before it ran out: no version moves
+        now = 1_100;
+        assertFalse(r.read(cells, now), "the lease read ran out, but it was renewed: nothing changed");
+        now = 1_201;
         assertTrue(r.read(cells, now), "no version moved, but b's lease ran out");
         assertTrue(r.suspended(2));
         r.passed();
-        cells.get(2).leaseUntil = 3_000;   // renewed
-        cells.get(2).version++;
-        assertTrue(r.read(cells, now));
+        assertFalse(r.read(cells, now));
+        cells.get(2).leaseUntil = 3_000;   // renewed after it lapsed: still no version
+        assertTrue(r.read(cells, now), "b's lease was renewed");
         assertFalse(r.suspended(2));
     }
 
