@@ -326,17 +326,22 @@ public final class Cell {
     /**
      * A number that grows whenever this cell's parent, command, seats, children or their seats
      * change, or its lease is set other than by a renewal that only moves its end later: what a
-     * check of many cells reads to skip the unchanged ones. Without it moving, {@link #isSuspended()}
+     * check of many cells reads (or hears of: {@link #onLinksChanged}) to skip the unchanged ones.
+     * Without it moving, {@link #isSuspended()}
      * may turn true once the clock passes {@link #leaseUntilMillis()}, and false again when the
      * lease is renewed; {@link #leaseUntilMillis()} may grow.
      */
     public long linkVersion() {
-        return protocol.linkVersion().getAsLong();
+        return protocol.linkVersion();
     }
 
-    /** Reads {@link #linkVersion()} whenever asked, more cheaply than through the cell. */
-    public java.util.function.LongSupplier linkVersionSource() {
-        return protocol.linkVersion();
+    /**
+     * Runs {@code listener} (on the cell's thread) every time {@link #linkVersion()} moves, replacing
+     * any listener set before (null: none): a check of many cells hears which ones changed without
+     * visiting the others.
+     */
+    public void onLinksChanged(Runnable listener) {
+        protocol.onLinksChanged(listener);
     }
 
     /** When the lease from the parent runs out: after it the cell is suspended (until renewed). */

@@ -378,8 +378,12 @@ final class TeamProtocol implements DiscoveryActions {
         return reports.parentOrNull();
     }
 
-    java.util.function.LongSupplier linkVersion() {
-        return st.linkVersion;
+    long linkVersion() {
+        return st.linkVersion.getAsLong();
+    }
+
+    void onLinksChanged(Runnable listener) {
+        st.linkVersion.listener = listener;
     }
 
     long leaseUntilMillis() {

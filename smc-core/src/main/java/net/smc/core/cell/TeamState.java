@@ -32,8 +32,7 @@ final class TeamState {
      * a reader that finds the end it read has passed reads it again), and as a manager which
      * children it has and their seats. Every writer of those calls {@link #linksChanged()}; checks
      * that read a thousand cells (a simulation's invariants) re-read only the cells whose version
-     * moved. An object of its own,
-     * so that such a check reads it without walking from the cell to this state.
+     * moved, told by {@link LinkVersion#listener} as it moves.
      */
     final LinkVersion linkVersion = new LinkVersion();
 
@@ -195,11 +194,15 @@ final class TeamState {
     /** Records a change of the parent, command, lease, seats, children or their seats (see {@link #linkVersion}). */
     void linksChanged() {
         linkVersion.value++;
+        if (linkVersion.listener != null) {
+            linkVersion.listener.run();
+        }
     }
 
-    /** {@link #linkVersion}'s counter. */
+    /** {@link #linkVersion}'s counter, and who is told when it moves (null: no one). */
     static final class LinkVersion implements LongSupplier {
         private long value;
+        Runnable listener;
 
         @Override
         public long getAsLong() {

@@ -2,12 +2,12 @@ package net.smc.sim.team;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.function.BiPredicate;
 import java.util.function.Function;
-import java.util.function.LongSupplier;
 import java.util.function.Predicate;
 import java.util.function.ToLongFunction;
 
@@ -22,8 +22,9 @@ import net.smc.core.cell.Seat;
  *
  * <p><b>Driven by the cells' changes.</b> A cell's {@linkplain Cell#linkVersion() link version}
  * grows whenever its parent, command, seats, children or their seats change, or its lease is set
- * other than by a renewal. A check reads each cell's version and re-reads only the cells whose
- * version moved, and whether a cell is listed by its parent only when the cell or its parent moved.
+ * other than by a renewal, and the simulation tells these readings so ({@link #moved}, from
+ * {@link Cell#onLinksChanged}). A check re-reads only the cells that moved, and whether a cell is
+ * listed by its parent only when the cell or its parent moved; it visits no other cell.
  * The lease is the one reading that changes without the version: a cell whose lease, as last read,
  * has run out ({@code now > leaseUntil}), or that was suspended, is read again (its lease was
  * renewed, or it lapsed). With {@link #verifying} on, every check also reads every cell in
@@ -42,7 +43,7 @@ import net.smc.core.cell.Seat;
  */
 final class CellReadings<C> {
     /** What is read of one cell. */
-    record Reader<C>(Function<C, String> vehicle, Function<C, LongSupplier> version, Function<C, String> parent,
+    record Reader<C>(Function<C, String> vehicle, Function<C, String> parent,
                      Predicate<C> acting, Predicate<C> suspended, ToLongFunction<C> leaseUntil,
                      BiPredicate<C, String> hasChild, Function<C, List<Seat>> seats, BiPredicate<C, List<Seat>> holdsSeats) {
     }
@@ -54,9 +55,10 @@ final class CellReadings<C> {
     private final List<C> live = new ArrayList<>();
     private final Map<String, Integer> index = new HashMap<>();
     private String[] vehicle = new String[0];
-    private long[] version = new long[0];
-    /** Where each cell's link version is read (fetched once per live cell). */
-    private LongSupplier[] versionOf = new LongSupplier[0];
+    /** Each live cell's position, to mark the ones that moved. */
+    private final Map<C, Integer> position = new IdentityHashMap<>();
+    /** The cells that moved since the last read (told by {@link #moved}). */
+    private boolean[] told = new boolean[0];
     private String[] parent = new String[0];
     /** The parent's index among the live cells, -1 when none or not live. */
     private int[] up = new int[0];
@@ -72,7 +74,7 @@ final class CellReadings<C> {
 
     /** The readings of live simulated cells. */
     static CellReadings<Cell> ofCells() {
-        return new CellReadings<>(new Reader<>(Cell::vehicle, Cell::linkVersionSource, Cell::parentOrNull,
+        return new CellReadings<>(new Reader<>(Cell::vehicle, Cell::parentOrNull,
                 Cell::isActingCommander, Cell::isSuspended, Cell::leaseUntilMillis, Cell::hasChild, Cell::seats,
                 Cell::holdsSeats));
     }
@@ -103,10 +105,9 @@ final class CellReadings<C> {
         int n = live.size();
         for (int i = 0; i < n; i++) {
             C c = live.get(i);
-            long v = versionOf[i].getAsLong();
-            moved[i] = all || v != version[i];
+            moved[i] = all || told[i];
+            told[i] = false;
             if (moved[i]) {
-                version[i] = v;
                 reread++;
                 same &= readOwn(i, c);
             } else if (parent[i] != null && !acting[i] && (suspended[i] || nowMillis > leaseUntil[i])) {
@@ -176,8 +177,19 @@ final class CellReadings<C> {
                     : null;
             if (wrong != null) {
                 throw new IllegalStateException("the incremental readings of " + vehicle[i] + " are stale: " + wrong
-                        + " (link version " + version[i] + "): a writer of its links did not move the version");
+                        + ": a writer of its links did not move its link version");
             }
+        }
+    }
+
+    /**
+     * Tells these readings that {@code cell}'s link version moved: the next {@link #read} reads it
+     * again. A cell not among the live cells read last is read anyway when it first appears.
+     */
+    void moved(C cell) {
+        Integer i = position.get(cell);
+        if (i != null) {
+            told[i] = true;
         }
     }
 
@@ -214,8 +226,8 @@ final class CellReadings<C> {
         int n = now.size();
         index.clear();
         vehicle = new String[n];
-        version = new long[n];
-        versionOf = new LongSupplier[n];
+        told = new boolean[n];
+        position.clear();
         parent = new String[n];
         up = new int[n];
         acting = new boolean[n];
@@ -226,7 +238,7 @@ final class CellReadings<C> {
         seats = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
             vehicle[i] = reader.vehicle.apply(now.get(i));
-            versionOf[i] = reader.version.apply(now.get(i));
+            position.put(now.get(i), i);
             index.put(vehicle[i], i);
             seats.add(List.of());
             up[i] = -1;

@@ -83,6 +83,11 @@ public final class TeamInvariants {
         return checks;
     }
 
+    /** Tells the checks that {@code cell}'s links changed (its {@link Cell#onLinksChanged} listener). */
+    void moved(Cell cell) {
+        readings.moved(cell);
+    }
+
     /** @throws InvariantViolation naming the rule, the cells involved, the seed and the trace */
     void check() {
         checks++;

@@ -223,6 +223,10 @@ public final class TeamSimulation implements CellTeam {
         }
         n.cell = b.build();
         liveCells = null;
+        if (checking) {
+            Cell cell = n.cell;
+            cell.onLinksChanged(() -> invariants.moved(cell));   // the checks re-read only the cells that changed
+        }
         if (world != null) {
             world.install(n.spec.id(), n.cell);
         }

@@ -16,8 +16,8 @@ import net.smc.core.cell.Seat;
 import org.junit.jupiter.api.Test;
 
 /**
- * The readings the invariant checks keep between checks, driven by the cells' link versions: a check
- * re-reads a cell when its version moved (and whether it is listed when it or its parent moved), and
+ * The readings the invariant checks keep between checks, driven by the cells' changes: a check
+ * re-reads a cell when told it moved (and whether it is listed when it or its parent moved), and
  * a cell whose lease ran out with time alone; it may skip the structural rules only when every
  * reading is as at the last check that passed them. Every test here runs with the full read that
  * verifies the incremental one on, and one shows that a change made without moving the version is
@@ -27,10 +27,9 @@ class CellReadingsTest {
     /** The stand-in cells' clock. */
     private long now;
 
-    /** A stand-in cell whose fields a test changes between checks (moving its version, as a cell's writers do). */
+    /** A stand-in cell whose fields a test changes between checks (telling the readings it moved, as a cell's link listener does). */
     private final class Node {
         final String vehicle;
-        long version;
         long leaseUntil = Long.MAX_VALUE;
         String parent;
         boolean acting;
@@ -49,7 +48,7 @@ class CellReadingsTest {
     }
 
     private CellReadings<Node> readings() {
-        return new CellReadings<>(new CellReadings.Reader<Node>(n -> n.vehicle, n -> () -> n.version, n -> n.parent,
+        return new CellReadings<>(new CellReadings.Reader<Node>(n -> n.vehicle, n -> n.parent,
                 n -> n.acting, Node::suspended, n -> n.leaseUntil, (n, v) -> n.children.contains(v),
                 n -> List.copyOf(n.seats), (n, s) -> n.seats.equals(s))).verifying(true);
     }
@@ -71,12 +70,12 @@ class CellReadingsTest {
         assertFalse(r.read(cells, now), "nothing changed since a passed walk");
     }
 
-    /** {@code change} changes one cell and returns it; its version moves. */
+    /** {@code change} changes one cell and returns it; the readings are told it moved. */
     private void assertChangeIsSeen(String what, Function<List<Node>, Node> change) {
         List<Node> cells = team();
         CellReadings<Node> r = readings();
         settle(r, cells);
-        change.apply(cells).version++;
+        r.moved(change.apply(cells));
         assertTrue(r.read(cells, now), what + " must make the next check walk the rules");
         r.passed();
         assertFalse(r.read(cells, now), what + ": read again after a passed walk, nothing new");
@@ -126,10 +125,10 @@ class CellReadingsTest {
         CellReadings<Node> r = readings();
         settle(r, cells);
         cells.get(0).children.add("b");   // not b's parent: nothing the rules read
-        cells.get(0).version++;
+        r.moved(cells.get(0));
         assertFalse(r.read(cells, now));
         cells.get(1).children.add("b");
-        cells.get(1).version++;
+        r.moved(cells.get(1));
         assertTrue(r.read(cells, now), "b's parent lists it now");
         assertTrue(r.listedByParent(2));
     }
