@@ -183,8 +183,8 @@ public final class TeamSimulationBuilder {
 
     /**
      * Whether the invariants are checked after every step (default true). Off only to measure
-     * what the cells themselves cost: a check every 50 ms of simulated time reads each cell's link
-     * version, re-reads the cells that changed, and walks the rules when anything did.
+     * what the cells themselves cost: a check every 50 ms of simulated time re-reads the cells that
+     * told it their links changed (and those whose lease ran out), and walks the rules when anything did.
      */
     public TeamSimulationBuilder invariantChecks(boolean on) {
         this.checking = on;
