@@ -316,6 +316,7 @@ final class Assignee {
         st.lastStatusMillis = ctx.clock().nowMillis();
         // The answer leaves now; the parent hears it later, so its failure timeout starts later still.
         st.leaseUntilMillis = ctx.clock().nowMillis() + ctx.timing().leaseMillis();
+        st.linksChanged();
         st.lapseNoted = false;
         if (!ctx.slots().role(seat.role()).isSecondary() || st.identity == null) {
             st.identity = a.identity();

@@ -127,6 +127,7 @@ final class BackupCommander {
         st.roster = null;
         st.children.clear();
         st.owned.clear();
+        st.linksChanged();
         seating.recomputeOwnership();
         long now = ctx.clock().nowMillis();
         for (Roster.Entry e : r.members()) {
@@ -152,6 +153,7 @@ final class BackupCommander {
             List<Seat> held = new ArrayList<>(c.seats);
             held.add(seat);
             c.seats = List.copyOf(held);
+            st.linksChanged();
             o.holder = e.vehicle();
         }
         ctx.emit(CellEvent.Kind.TOOK_OVER, "commander " + old + " silent; leads epoch " + st.epoch + " with children "

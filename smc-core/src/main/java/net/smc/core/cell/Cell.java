@@ -314,6 +314,45 @@ public final class Cell {
         return protocol.seats();
     }
 
+    /**
+     * Whether this vehicle holds exactly {@code seats}, in that order: what {@code seats().equals(seats)}
+     * says, without copying them (for checks that read a thousand cells often).
+     */
+    public boolean holdsSeats(List<Seat> seats) {
+        return protocol.holdsSeats(seats);
+    }
+
+    /** The vehicle id of this cell's parent, or null when it has none: {@link #parent()} without an Optional. */
+    public String parentOrNull() {
+        return protocol.parentOrNull();
+    }
+
+    /**
+     * A number that grows whenever this cell's parent, command, seats, children or their seats
+     * change, or its lease is set other than by a renewal that only moves its end later: what a
+     * check of many cells reads (or hears of: {@link #onLinksChanged}) to skip the unchanged ones.
+     * Without it moving, {@link #isSuspended()}
+     * may turn true once the clock passes {@link #leaseUntilMillis()}, and false again when the
+     * lease is renewed; {@link #leaseUntilMillis()} may grow.
+     */
+    public long linkVersion() {
+        return protocol.linkVersion();
+    }
+
+    /**
+     * Runs {@code listener} (on the cell's thread) every time {@link #linkVersion()} moves, replacing
+     * any listener set before (null: none): a check of many cells hears which ones changed without
+     * visiting the others.
+     */
+    public void onLinksChanged(Runnable listener) {
+        protocol.onLinksChanged(listener);
+    }
+
+    /** When the lease from the parent runs out: after it the cell is suspended (until renewed). */
+    public long leaseUntilMillis() {
+        return protocol.leaseUntilMillis();
+    }
+
     public Optional<Identity> identity() {
         return protocol.identity();
     }

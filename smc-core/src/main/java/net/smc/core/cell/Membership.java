@@ -144,6 +144,7 @@ final class Membership {
             st.statusVersionFrom = from;
             // Seats granted by the old commander count again only once the new one has echoed a heartbeat.
             st.leaseUntilMillis = ctx.clock().nowMillis() - 1;
+            st.linksChanged();
             st.backupRank = -1;
             st.roster = null;
             reportCountdown = 0;
@@ -173,7 +174,7 @@ final class Membership {
         unconfirmed = tag == 0;
         Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
         if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
-            st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();
+            st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();   // a later end only: see TeamState.linkVersion
             st.lapseNoted = false;
         }
     }
@@ -187,6 +188,7 @@ final class Membership {
         }
         Child child = st.children.remove(from);
         if (child != null) {
+            st.linksChanged();
             seating.vacate(child);
             ctx.emit(CellEvent.Kind.LEFT, "child " + from + " left (" + l.reason() + "); vacated " + child.seats);
             counts.updateMissionState();

@@ -33,6 +33,7 @@ final class Merge {
         ctx.emit(CellEvent.Kind.STEPPED_DOWN, "meets commander " + other + " of epoch " + otherEpoch + " (own epoch "
                 + st.epoch + ") and steps down");
         st.acting = false;
+        st.linksChanged();
         seating.dropEverything("commander " + ctx.self() + " stepped down for " + other);
         st.commander = null;
         st.epoch = 0;

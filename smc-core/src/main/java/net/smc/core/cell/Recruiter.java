@@ -386,6 +386,7 @@ final class Recruiter {
                         Child c = st.children.get(holder);
                         if (c != null) {
                             c.seats = c.seats.stream().filter(s -> !s.equals(seat)).toList();
+                            st.linksChanged();
                         }
                         Owned o = st.owned.get(seat);
                         if (o != null && holder.equals(o.holder)) {
@@ -413,6 +414,7 @@ final class Recruiter {
         }
         List<Object> state = st.handover.getOrDefault(seat.role(), List.of());
         Child child = st.children.computeIfAbsent(vehicle, Child::new);
+        st.linksChanged();
         RoleAssignment assignment = new RoleAssignment(ctx.missionId(), seat.role(), ctx.identityOf(seat), ctx.self(),
                 ctx.policyRefs(seat.role()), st.epoch, state, child.seats.stream().map(Seat::toString).toList(), st.ancestors);
         o.pendingFor = vehicle;
@@ -495,6 +497,7 @@ final class Recruiter {
         child.lastHeard = ctx.clock().nowMillis();
         List<Seat> before = child.seats;
         child.seats = ctx.slots().afterAssign(before, seat.get()).stream().filter(st.owned::containsKey).toList();
+        st.linksChanged();
         for (Seat dropped : before) {
             if (!child.seats.contains(dropped) && st.owned.containsKey(dropped) && vehicle.equals(st.owned.get(dropped).holder)) {
                 st.owned.get(dropped).holder = null;
@@ -516,6 +519,7 @@ final class Recruiter {
         Child child = st.children.get(vehicle);
         if (child != null && child.seats.isEmpty()) {
             st.children.remove(vehicle);
+            st.linksChanged();
         }
         st.heard.remove(vehicle); // it refused, or fell silent: what it answered no longer holds
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);

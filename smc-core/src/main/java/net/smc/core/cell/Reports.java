@@ -113,16 +113,15 @@ final class Reports {
             }
         }
         child.seats = List.copyOf(mine);
+        st.linksChanged();
         child.consistent = !conflict;
     }
 
     List<Object> reportValues() {
         List<Object> v = new ArrayList<>();
-        counts.subtreeCounts().forEach((role, n) -> {
-            if (n > 0) {
-                v.add(role);
-                v.add(BigDecimal.valueOf(n));
-            }
+        counts.heldSubtreeCounts().forEach((role, n) -> {
+            v.add(role);
+            v.add(BigDecimal.valueOf(n));
         });
         v.add(SIZE);
         v.add(BigDecimal.valueOf(counts.subtreeSize()));
@@ -167,6 +166,14 @@ final class Reports {
 
     List<Seat> seats() {
         return List.copyOf(st.seats);
+    }
+
+    boolean holdsSeats(List<Seat> seats) {
+        return st.seats.equals(seats);
+    }
+
+    String parentOrNull() {
+        return st.parent == null ? null : st.parent.vehicle();
     }
 
     Optional<Identity> identity() {

@@ -28,6 +28,7 @@ final class Seating {
         if (!st.seats.remove(seat)) {
             return;
         }
+        st.linksChanged();
         ctx.host().withdrawRole(seat.role());
         Owned mine = st.owned.get(seat);
         if (mine != null && ctx.self().equals(mine.holder)) {
@@ -57,6 +58,7 @@ final class Seating {
         }
         st.seats.clear();
         st.parent = null;
+        st.linksChanged();
         st.ancestors = List.of();
         st.identity = null;
         st.backupRank = -1;
@@ -90,6 +92,7 @@ final class Seating {
             List<Seat> kept = c.seats.stream().filter(st.owned::containsKey).toList();
             if (kept.size() != c.seats.size()) {
                 c.seats = kept;
+                st.linksChanged();
                 if (kept.isEmpty()) {
                     st.children.remove(c.vehicle);
                     if (c.address != null) {

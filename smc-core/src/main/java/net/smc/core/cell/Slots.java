@@ -171,6 +171,12 @@ public final class Slots {
         return rank.get(role);
     }
 
+    /** {@link #rank}, or {@link Integer#MAX_VALUE} for a name that is not a role of the mission. */
+    int rankOrLast(String role) {
+        Integer r = rank.get(role);
+        return r == null ? Integer.MAX_VALUE : r;
+    }
+
     /**
      * The seats a vehicle holds after it is given {@code added}: the new seat, then those of
      * {@code held} that may still share the vehicle with it (the mission's colocation rules), taken

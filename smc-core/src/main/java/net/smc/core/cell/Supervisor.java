@@ -80,6 +80,7 @@ final class Supervisor {
             if (reserved.isEmpty()) {
                 if (child != null) {
                     st.children.remove(env.sender());
+                    st.linksChanged();
                     seating.vacate(child);
                     ctx.emit(CellEvent.Kind.REJECTED, env.sender() + " reports role " + h.role() + " but holds " + child.seats
                             + " from this cell; let go");
@@ -136,13 +137,18 @@ final class Supervisor {
         // A child left holding nothing from this cell (its seats taken back, or reconciled away),
         // with no assignment in flight to it, is no child: drop it, so that it can be recruited again
         // (discovery replies from children are ignored) instead of lingering, neither supervised nor free.
-        st.children.values().removeIf(c -> c.seats.isEmpty()
-                && st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)));
+        if (st.children.values().removeIf(c -> c.seats.isEmpty()
+                && st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor)))) {
+            st.linksChanged();
+        }
         List<Child> silent = st.children.values().stream()
                 .filter(c -> !c.seats.isEmpty() && now - c.lastHeard > ctx.timing().failureTimeoutMillis())
                 // An assignment in flight may still make it keep its seats: wait for its answer or expiry.
                 .filter(c -> st.owned.values().stream().noneMatch(o -> c.vehicle.equals(o.pendingFor))).toList();
         silent.forEach(c -> st.children.remove(c.vehicle));
+        if (!silent.isEmpty()) {
+            st.linksChanged();
+        }
         for (Child child : silent) {
             failed(child, now - child.lastHeard);
         }
@@ -447,6 +453,7 @@ final class Supervisor {
             return;
         }
         st.seats.add(seat);
+        st.linksChanged();
         o.holder = ctx.self();
         seating.recomputeOwnership();
         ctx.emit(CellEvent.Kind.HOSTING, seat + " beside " + st.seats.get(0));

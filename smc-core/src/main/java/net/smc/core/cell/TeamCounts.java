@@ -1,5 +1,9 @@
 package net.smc.core.cell;
 
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -23,12 +27,49 @@ final class TeamCounts {
 
     /** Holders per role in this cell's subtree, itself included (suspended holders do not count). */
     Map<String, Integer> subtreeCounts() {
-        Map<String, Integer> counts = ctx.slots().count(st.suspended() ? List.of() : st.seats);
-        for (Child c : st.children.values()) {
-            Map<String, Integer> sub = c.subtree != null ? c.subtree : ctx.slots().count(c.seats);
+        return subtreeCounts(ctx.slots(), st.suspended() ? List.of() : st.seats, st.children.values());
+    }
+
+    /** Holders per role of {@code own} seats and of {@code children}'s subtrees, every role of the mission present. */
+    static Map<String, Integer> subtreeCounts(Slots slots, List<Seat> own, Collection<Child> children) {
+        Map<String, Integer> counts = slots.count(own);
+        for (Child c : children) {
+            Map<String, Integer> sub = c.subtree != null ? c.subtree : slots.count(c.seats);
             sub.forEach((role, n) -> counts.merge(role, n, Integer::sum));
         }
         return counts;
+    }
+
+    /**
+     * The entries of {@link #subtreeCounts()} with a count above zero, in the same order (the
+     * mission's roles breadth-first, then any other name in the order first met), summed over the
+     * roles actually held instead of over a map of every role of the mission: what a report carries,
+     * made twice a second by every cell of a team whose mission may have a thousand roles.
+     */
+    Map<String, Integer> heldSubtreeCounts() {
+        return heldSubtreeCounts(ctx.slots(), st.suspended() ? List.of() : st.seats, st.children.values());
+    }
+
+    /** {@link #subtreeCounts(Slots, List, Collection)}'s entries above zero, in its order. */
+    static Map<String, Integer> heldSubtreeCounts(Slots slots, List<Seat> own, Collection<Child> children) {
+        Map<String, Integer> sums = new LinkedHashMap<>();
+        own.forEach(s -> sums.merge(s.role(), 1, Integer::sum));
+        for (Child c : children) {
+            if (c.subtree != null) {
+                c.subtree.forEach((role, n) -> sums.merge(role, n, Integer::sum));
+            } else {
+                c.seats.forEach(s -> sums.merge(s.role(), 1, Integer::sum));
+            }
+        }
+        List<Map.Entry<String, Integer>> entries = new ArrayList<>(sums.entrySet());
+        entries.sort(Comparator.comparingInt(e -> slots.rankOrLast(e.getKey())));   // stable: other names keep their order
+        Map<String, Integer> out = new LinkedHashMap<>();
+        for (Map.Entry<String, Integer> e : entries) {
+            if (e.getValue() > 0) {
+                out.put(e.getKey(), e.getValue());
+            }
+        }
+        return out;
     }
 
     int hostedCount() {

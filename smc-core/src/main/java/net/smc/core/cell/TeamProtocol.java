@@ -264,6 +264,7 @@ final class TeamProtocol implements DiscoveryActions {
             st.epoch = 0;
             st.commander = ctx.self();
             st.seats.add(seat);
+            st.linksChanged();
             st.identity = ctx.identityOf(seat);
             seating.recomputeOwnership();
             ctx.emit(CellEvent.Kind.COMMANDING, "acting commander of " + ctx.missionId() + " " + st.identity
@@ -305,6 +306,7 @@ final class TeamProtocol implements DiscoveryActions {
         ctx.emit(CellEvent.Kind.LEFT, "leaves the team");
         seating.dropEverything("left the team");
         st.acting = false;
+        st.linksChanged();
     }
 
     /** Ready to be discovered again after {@link #leave}. */
@@ -407,6 +409,26 @@ final class TeamProtocol implements DiscoveryActions {
 
     List<Seat> seats() {
         return reports.seats();
+    }
+
+    boolean holdsSeats(List<Seat> seats) {
+        return reports.holdsSeats(seats);
+    }
+
+    String parentOrNull() {
+        return reports.parentOrNull();
+    }
+
+    long linkVersion() {
+        return st.linkVersion.getAsLong();
+    }
+
+    void onLinksChanged(Runnable listener) {
+        st.linkVersion.listener = listener;
+    }
+
+    long leaseUntilMillis() {
+        return st.leaseUntilMillis;
     }
 
     Optional<Identity> identity() {

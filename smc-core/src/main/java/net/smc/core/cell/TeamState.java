@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.function.LongSupplier;
 
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.message.Identity;
@@ -23,6 +24,16 @@ import net.smc.core.transport.Address;
  */
 final class TeamState {
     private final TeamContext ctx;
+
+    /**
+     * Grows whenever what places this cell in the tree changes: {@link #parent}, {@link #acting},
+     * {@link #seats}, {@link #leaseUntilMillis} (but for a renewal that only moves its end later:
+     * a reader that finds the end it read has passed reads it again), and as a manager which
+     * children it has and their seats. Every writer of those calls {@link #linksChanged()}; checks
+     * that read a thousand cells (a simulation's invariants) re-read only the cells whose version
+     * moved, told by {@link LinkVersion#listener} as it moves.
+     */
+    final LinkVersion linkVersion = new LinkVersion();
 
     // Where this cell stands (written by Assignee, Membership, BackupCommander, Merge, Seating).
     boolean acting;
@@ -188,6 +199,25 @@ final class TeamState {
 
     TeamState(TeamContext ctx) {
         this.ctx = ctx;
+    }
+
+    /** Records a change of the parent, command, lease, seats, children or their seats (see {@link #linkVersion}). */
+    void linksChanged() {
+        linkVersion.value++;
+        if (linkVersion.listener != null) {
+            linkVersion.listener.run();
+        }
+    }
+
+    /** {@link #linkVersion}'s counter, and who is told when it moves (null: no one). */
+    static final class LinkVersion implements LongSupplier {
+        private long value;
+        Runnable listener;
+
+        @Override
+        public long getAsLong() {
+            return value;
+        }
     }
 
     /** Free: no parent, no role, not commanding, not taking a role. */

@@ -66,7 +66,8 @@ public final class IdealAuthentication {
     private final Clock clock;
     private final Map<Address, Credential> vouched = new HashMap<>();
     private final Map<String, Credential> byVehicle = new HashMap<>();
-    private final Map<Address, Long> counters = new HashMap<>();
+    /** The last seal counter of each address, kept across its endpoints' restarts (an endpoint holds its own). */
+    private final Map<Address, long[]> counters = new HashMap<>();
     private final Map<Address, Integer> incarnations = new HashMap<>();
     /** The endpoint attached at each address now (its latest incarnation). */
     private final Map<Address, Endpoint> endpoints = new HashMap<>();
@@ -155,9 +156,9 @@ public final class IdealAuthentication {
         return ignoredUnverified;
     }
 
-    private byte[] seal(Address from, Address to, int toIncarnation, byte[] payload) {
-        long counter = Math.max(counters.getOrDefault(from, Long.MIN_VALUE) + 1, clock.nowMillis() << 20);
-        counters.put(from, counter);
+    private byte[] seal(Address from, long[] last, Address to, int toIncarnation, byte[] payload) {
+        long counter = Math.max(last[0] + 1, clock.nowMillis() << 20);
+        last[0] = counter;
         ByteBuffer out = ByteBuffer.allocate(payload.length + SEAL_BYTES);
         out.putLong(counter).put(payload).putLong(tag(from, to, toIncarnation, counter, payload, 0, payload.length));
         return out.array();
@@ -202,6 +203,8 @@ public final class IdealAuthentication {
         private final CredentialStatus status;
         private final int incarnation;
         private final Map<Address, ReplayWindow> windows = new HashMap<>();
+        /** This address's last seal counter (shared with its later incarnations). */
+        private final long[] counter;
         private AuthenticatedReceiver receiver;
         private Predicate<byte[]> unverifiedFilter = payload -> false;
 
@@ -209,6 +212,7 @@ public final class IdealAuthentication {
             super(inner);
             this.status = status;
             this.incarnation = incarnation;
+            this.counter = counters.computeIfAbsent(inner.localAddress(), a -> new long[] {Long.MIN_VALUE});
             inner.setReceiver(this::onDatagram);
         }
 
@@ -220,12 +224,12 @@ public final class IdealAuthentication {
 
         @Override
         public void send(Address to, byte[] data) {
-            inner.send(to, seal(localAddress(), to, incarnations.getOrDefault(to, 0), data));
+            inner.send(to, seal(localAddress(), counter, to, incarnations.getOrDefault(to, 0), data));
         }
 
         @Override
         public void broadcast(byte[] data) {
-            inner.broadcast(seal(localAddress(), null, 0, data));
+            inner.broadcast(seal(localAddress(), counter, null, 0, data));
         }
 
         /** What the check of this endpoint's own credential found. */

@@ -31,6 +31,7 @@ public final class FaultSchedule {
     private Consumer<String> log = line -> { };
     private Consumer<CellEvent> events = e -> { };
     private boolean adversary;
+    private boolean verifyReadings;
 
     /**
      * @param distributed the reconnaissance mission, distributed scheme
@@ -49,6 +50,12 @@ public final class FaultSchedule {
     /** Puts an {@link Adversary} on the channel, or takes it off (by default: {@link #hasAdversary}). */
     public FaultSchedule adversary(boolean on) {
         this.adversary = on;
+        return this;
+    }
+
+    /** Makes every invariant check verify its incremental readings ({@link TeamSimulationBuilder#verifyInvariantReadings}). */
+    public FaultSchedule verifyInvariantReadings(boolean on) {
+        this.verifyReadings = on;
         return this;
     }
 
@@ -106,7 +113,7 @@ public final class FaultSchedule {
             team.add(SimVehicle.command("rcdr").asCommander().asRogue());
         }
         TeamSimulation sim = TeamSimulation.builder(mission, repository, seed).vehicles(team).link(link(random))
-                .listener(events).adversary(adversary).build();
+                .listener(events).adversary(adversary).verifyInvariantReadings(verifyReadings).build();
         sim.start();
         List<String> honest = team.stream().filter(v -> !v.rogue()).map(SimVehicle::id).toList();
         List<String> crashed = new ArrayList<>();

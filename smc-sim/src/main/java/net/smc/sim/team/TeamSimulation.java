@@ -104,6 +104,10 @@ public final class TeamSimulation implements CellTeam {
     private final SharedDecodes sharedDecodes = new SharedDecodes();
     private final BiConsumer<String, String> output;
     private int nextPort = 5000;
+    /** {@link #cells()} as it stands, made again after a cell is booted or crashed (null: to make). */
+    private List<Cell> liveCells;
+    /** {@link #rogues()} as it stands, made again after a vehicle is added (null: to make). */
+    private List<SimVehicle> rogues;
     private long restarts;
 
     /** One vehicle: its spec, address, and its current cell (null while crashed). */
@@ -132,7 +136,7 @@ public final class TeamSimulation implements CellTeam {
         this.listener = b.listener;
         this.trust = SimIdentities.trust(mission.instanceName());
         this.ideal = new IdealAuthentication(trust, sim);
-        this.invariants = new TeamInvariants(this, b.mergeBoundMillis);
+        this.invariants = new TeamInvariants(this, b.mergeBoundMillis, b.verifyingReadings);
         this.checking = b.checking;
         this.output = b.output;
         this.world = b.arena == null ? null : new WorldTeam(this, SimWorld.builder(b.arena, sim).seed(seed).radio(b.radio).robotSpec(b.robotSpec).build(),
@@ -193,6 +197,7 @@ public final class TeamSimulation implements CellTeam {
         }
         Node n = new Node(v, Address.loopback(nextPort++));
         nodes.put(v.id(), n);
+        rogues = null;
         if (world != null) {
             world.bind(v.id(), n.address);
         }
@@ -220,6 +225,11 @@ public final class TeamSimulation implements CellTeam {
             b.scheme(scheme);
         }
         n.cell = b.build();
+        liveCells = null;
+        if (checking) {
+            Cell cell = n.cell;
+            cell.onLinksChanged(() -> invariants.moved(cell));   // the checks re-read only the cells that changed
+        }
         if (world != null) {
             world.install(n.spec.id(), n.cell);
         }
@@ -239,6 +249,7 @@ public final class TeamSimulation implements CellTeam {
         n.cell.stop();
         network.crash(n.address);
         n.cell = null;
+        liveCells = null;
         record(new CellEvent(sim.nowMillis(), vehicle, CellEvent.Kind.LEFT, "*** crashed"));
     }
 
@@ -347,12 +358,23 @@ public final class TeamSimulation implements CellTeam {
 
     /** Live cells of honest vehicles. */
     public List<Cell> cells() {
-        return nodes.values().stream().filter(n -> n.cell != null && !n.spec.rogue()).map(n -> n.cell).toList();
+        if (liveCells == null) {
+            liveCells = nodes.values().stream().filter(n -> n.cell != null && !n.spec.rogue()).map(n -> n.cell).toList();
+        }
+        return liveCells;
     }
 
     @Override
     public Collection<SimVehicle> vehicles() {
         return nodes.values().stream().map(n -> n.spec).toList();
+    }
+
+    /** The rogue vehicles among {@link #vehicles()}. */
+    List<SimVehicle> rogues() {
+        if (rogues == null) {
+            rogues = nodes.values().stream().map(n -> n.spec).filter(SimVehicle::rogue).toList();
+        }
+        return rogues;
     }
 
     @Override

@@ -42,6 +42,7 @@ public final class TeamSimulationBuilder {
     net.smc.policy.api.AuthMode auth = net.smc.policy.api.AuthMode.OFF;
     boolean adversary;
     boolean checking = true;
+    boolean verifyingReadings;
 
     TeamSimulationBuilder(Mission mission, PolicyRepository repository, long seed) {
         this.mission = Objects.requireNonNull(mission, "mission");
@@ -182,10 +183,21 @@ public final class TeamSimulationBuilder {
 
     /**
      * Whether the invariants are checked after every step (default true). Off only to measure
-     * what the cells themselves cost: a check visits every cell, every 50 ms of simulated time.
+     * what the cells themselves cost: a check every 50 ms of simulated time re-reads the cells that
+     * told it their links changed (and those whose lease ran out), and walks the rules when anything did.
      */
     public TeamSimulationBuilder invariantChecks(boolean on) {
         this.checking = on;
+        return this;
+    }
+
+    /**
+     * With {@code on}, every invariant check also reads every cell in full and fails if the readings
+     * it keeps from check to check (driven by the cells' link versions) are stale: for tests that
+     * show no writer of a cell's links forgets to say so. Off by default (it costs a full read).
+     */
+    public TeamSimulationBuilder verifyInvariantReadings(boolean on) {
+        this.verifyingReadings = on;
         return this;
     }
 
