@@ -50,9 +50,8 @@ class ReconnaissanceScenarioTest {
     private static final long SHORT_RUN = 260_000;
     /**
      * Seeds 1 to this are run to the goal in every test run (about 2 minutes of wall time on two
-     * threads). The goal is met on all 50, but not yet on every seed beyond them: the robot whose
-     * battery dies at 70 s can stop in a doorway and seal the rooms behind it (see the README), and
-     * any change to the robots' paths moves that failure from seed to seed.
+     * threads). The goal is met on all 50, but not yet on every seed beyond them (see the README:
+     * a detector cannot push a dead robot out of a doorway yet, and a few seeds fail otherwise).
      */
     static final int SEEDS = 50;
     /** The longest wait for one seed's outcome, minutes of wall time. */
