@@ -36,7 +36,10 @@ import net.smc.sim.map.Zone;
  * the far side of the wall, is the common case. Those unknown cells are taken to be hidden and make
  * no frontier for this robot again; without that, such cells along every wall drew the robot back
  * again and again. For the same reason a cell the ring has struck is no frontier even when rays
- * passing beside it have freed it since.
+ * passing beside it have freed it since. Told where a failed teammate's body lies
+ * ({@link #pushAside}), it plans with that body's cells taken for free and pushes the body aside
+ * when it is in the way (the path follower drives on slowly into it): a robot that died in a
+ * doorway would otherwise seal the rooms behind it.
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
@@ -74,6 +77,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private final boolean[] struck;
     private final Set<String> sighted = new HashSet<>();
     private final List<Zone> zones = new java.util.ArrayList<>();
+    private final List<Point> bodies = new java.util.ArrayList<>();
+    private boolean pushing;
     private boolean exploring;
     private int target = -1;
     private double reported;
@@ -128,6 +133,65 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         zones.add(new Zone(x, y, radius));
         follower.clear();
         target = -1;
+    }
+
+    @Override
+    public void pushAside(double x, double y) {
+        StateValues.finite("Explorer pushAside x", x);
+        StateValues.finite("Explorer pushAside y", y);
+        Point body = new Point(x, y);
+        bodies.add(body);
+        // what the body hid from the ring is not hidden for good: it may be pushed away
+        hidden.removeIf(cell -> behindBody(cell % map.cols(), cell / map.cols()));
+    }
+
+    /** Unknown cells this close to a failed teammate's body may lie behind the body, not a wall, m. */
+    static final double BEHIND_BODY = 1.0;
+
+    private boolean onBody(int c, int r) {
+        Point p = map.centre(c, r);
+        for (Point body : bodies) {
+            if (p.distanceTo(body.x(), body.y()) <= BODY_REACH) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private boolean behindBody(int c, int r) {
+        Point p = map.centre(c, r);
+        for (Point body : bodies) {
+            if (p.distanceTo(body.x(), body.y()) <= BEHIND_BODY) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** A failed teammate's cells within this of its reported position are taken for its body, which may be pushed, m. */
+    static final double BODY_REACH = 0.45;
+
+    /**
+     * The map with the cells of the failed teammates' bodies ({@link #pushAside}) taken for free:
+     * the map on which the robot plans to push a body aside.
+     */
+    private OccupancyGrid withoutBodies() {
+        OccupancyGrid view = map.copy();
+        for (Point body : bodies) {
+            int reach = (int) Math.ceil(BODY_REACH / map.resolution());
+            for (int r = map.row(body.y()) - reach; r <= map.row(body.y()) + reach; r++) {
+                for (int c = map.col(body.x()) - reach; c <= map.col(body.x()) + reach; c++) {
+                    if (!map.inside(c, r)) {
+                        continue;
+                    }
+                    Point p = map.centre(c, r);
+                    while (p.distanceTo(body.x(), body.y()) <= BODY_REACH && view.isOccupied(c, r)) {
+                        view.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        return view;
     }
 
     /** The zones it keeps out of. */
@@ -231,7 +295,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             hardware.drive().setWheelSpeeds(back, back);
             return;
         }
-        if (target >= 0 && !frontier(target % map.cols(), target / map.cols())) {
+        if (target >= 0 && !frontier(pushing ? withoutBodies() : map, target % map.cols(), target / map.cols())) {
             target = -1;
         }
         Pose pose = hardware.odometry().pose();
@@ -289,21 +353,27 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * Picks the nearest frontier open to the robot with the full {@link #CLEARANCE} and, when none
      * is, with only the body's half-width and 5 cm (a doorway narrowed on the map by a robot
      * standing in it, say, or by a stray reading); whether one was found.
+     * Once told of failed teammates' bodies ({@link #pushAside}) it plans on the map with their
+     * cells taken for free ({@link #withoutBodies}), and the path follower may push them.
      */
     private boolean chooseTarget(Pose pose) {
+        boolean push = !bodies.isEmpty();
+        OccupancyGrid grid = push ? withoutBodies() : map;
         for (PathPlanner p : List.of(planner, narrow)) {
             Set<Integer> failed = new HashSet<>();
             while (true) {
-                Optional<Integer> next = nearestFrontier(pose, p, failed);
+                Optional<Integer> next = nearestFrontier(pose, p, grid, failed);
                 if (next.isEmpty()) {
                     break;
                 }
                 Point goal = map.centre(next.get() % map.cols(), next.get() / map.cols());
-                Optional<List<Point>> path = p.plan(map, new Point(pose.x(), pose.y()), goal, zones, 0);
+                Optional<List<Point>> path = p.plan(grid, new Point(pose.x(), pose.y()), goal, zones, 0);
                 if (path.isPresent()) {
                     target = next.get();
                     nearSince = Double.NaN;
                     current = p;
+                    pushing = push;
+                    follower.pushable(pushing ? bodies : List.of());
                     obstructed = 0;
                     follower.follow(path.get(), map.resolution());
                     return true;
@@ -320,7 +390,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     /** Plans again to the current target on the map as it is now; whether a way is left. */
     private boolean replan(Pose pose) {
         Point p = map.centre(target % map.cols(), target / map.cols());
-        Optional<List<Point>> path = current.plan(map, new Point(pose.x(), pose.y()), p, zones, 0);
+        Optional<List<Point>> path = current.plan(pushing ? withoutBodies() : map, new Point(pose.x(), pose.y()), p, zones, 0);
         path.ifPresent(w -> follower.follow(w, map.resolution()));
         return path.isPresent();
     }
@@ -343,14 +413,22 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * edge freed it): its unknown side is the inside of that thing.
      */
     boolean frontier(int c, int r) {
-        if (!map.isFree(c, r) || struck[c + r * map.cols()]) {
+        return frontier(map, c, r);
+    }
+
+    /**
+     * The same on {@code grid}: the map, or the map without the failed teammates' bodies
+     * ({@link #withoutBodies}), on which the cells of a body the ring struck may be frontiers.
+     */
+    private boolean frontier(OccupancyGrid grid, int c, int r) {
+        if (!grid.isFree(c, r) || struck[c + r * map.cols()] && (grid == map || !onBody(c, r))) {
             return false;
         }
         int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int[] s : steps) {
             int nc = c + s[0];
             int nr = r + s[1];
-            if (map.inside(nc, nr) && !map.isKnown(nc, nr) && !hidden.contains(nc + nr * map.cols())) {
+            if (map.inside(nc, nr) && !grid.isKnown(nc, nr) && !hidden.contains(nc + nr * map.cols())) {
                 return true;
             }
         }
@@ -363,7 +441,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         int r = cell / map.cols();
         int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int[] s : steps) {
-            if (map.inside(c + s[0], r + s[1]) && !map.isKnown(c + s[0], r + s[1])) {
+            if (map.inside(c + s[0], r + s[1]) && !map.isKnown(c + s[0], r + s[1]) && !behindBody(c + s[0], r + s[1])) {
                 hidden.add(c + s[0] + (r + s[1]) * map.cols());
             }
         }
@@ -378,10 +456,10 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * Whether an occupied cell touches this one (8-connected): a frontier along a wall mostly
      * looks into the wall, and chasing it cell by cell costs a trip per cell for nothing.
      */
-    private boolean besideObstacle(int c, int r) {
+    private boolean besideObstacle(OccupancyGrid grid, int c, int r) {
         for (int dr = -1; dr <= 1; dr++) {
             for (int dc = -1; dc <= 1; dc++) {
-                if ((dr != 0 || dc != 0) && map.inside(c + dc, r + dr) && map.isOccupied(c + dc, r + dr)) {
+                if ((dr != 0 || dc != 0) && map.inside(c + dc, r + dr) && grid.isOccupied(c + dc, r + dr)) {
                     return true;
                 }
             }
@@ -393,9 +471,9 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * Breadth-first search over cells open to the robot, from its own cell. From a closed cell (the
      * robot stands close to something) any cell not occupied may be entered, so that it can leave.
      */
-    private Optional<Integer> nearestFrontier(Pose pose, PathPlanner planner, Set<Integer> failed) {
+    private Optional<Integer> nearestFrontier(Pose pose, PathPlanner planner, OccupancyGrid grid, Set<Integer> failed) {
         int cols = map.cols();
-        boolean[] closed = planner.closedCells(map, zones, 0);
+        boolean[] closed = planner.closedCells(grid, zones, 0);
         int startC = Math.max(0, Math.min(cols - 1, map.col(pose.x())));
         int startR = Math.max(0, Math.min(map.rows() - 1, map.row(pose.y())));
         int start = startC + startR * cols;
@@ -407,8 +485,8 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             int cell = queue.poll();
             int c = cell % cols;
             int r = cell / cols;
-            if (cell != start && frontier(c, r) && !setAside.holds(c, r, now) && !failed.contains(cell)
-                    && !besideObstacle(c, r)) {
+            if (cell != start && frontier(grid, c, r) && !setAside.holds(c, r, now) && !failed.contains(cell)
+                    && !besideObstacle(grid, c, r)) {
                 return Optional.of(cell);
             }
             int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -419,9 +497,9 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                     continue;
                 }
                 int next = nc + nr * cols;
-                if (!seen[next] && (!closed[next] || closed[cell]) && !map.isOccupied(nc, nr)) {
+                if (!seen[next] && (!closed[next] || closed[cell]) && !grid.isOccupied(nc, nr)) {
                     seen[next] = true;
-                    if (map.isKnown(nc, nr)) {
+                    if (grid.isKnown(nc, nr)) {
                         queue.add(next);
                     }
                 }

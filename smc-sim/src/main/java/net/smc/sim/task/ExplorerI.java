@@ -27,6 +27,15 @@ public interface ExplorerI {
     void avoid(double x, double y, double radius);
 
     /**
+     * A failed teammate's body lies at (x, y) (its last reported position): when no frontier is
+     * left open otherwise, the robot may plan through the cells of that body and drive slowly
+     * into it to push it aside (a dead robot stopped in a doorway would otherwise seal the rooms
+     * behind it). Zones to avoid stay closed.
+     */
+    @Op("pushAside:y:")
+    void pushAside(double x, double y);
+
+    /**
      * Raises {@code mapUpdate} with the map as it is now, if it changed since the last share (for
      * the aggregator, which merges the surveyors' maps).
      */

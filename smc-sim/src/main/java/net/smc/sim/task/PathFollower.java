@@ -26,6 +26,7 @@ final class PathFollower {
     private final double stopDistance;
     private final List<Point> path = new ArrayList<>();
     private double arriveTolerance;
+    private List<Point> pushable = List.of();
 
     PathFollower(RobotHardware robot, double waypointTolerance, double stopDistance) {
         this.robot = robot;
@@ -37,6 +38,29 @@ final class PathFollower {
         path.clear();
         path.addAll(waypoints);
         this.arriveTolerance = arriveTolerance;
+    }
+
+    /**
+     * Bodies the robot may push (failed teammates' positions): something in front within
+     * {@link #PUSH_NEAR} of one of them does not stop the robot, which drives on at
+     * {@link #PUSH_SPEED} of its top speed instead.
+     */
+    void pushable(List<Point> bodies) {
+        pushable = List.copyOf(bodies);
+    }
+
+    /** How near a pushable body the robot must be for what is in front of it to be taken for that body, m. */
+    static final double PUSH_NEAR = 0.7;
+    /** The fraction of its top speed at which the robot pushes. */
+    static final double PUSH_SPEED = 0.3;
+
+    private boolean besidePushable(Pose pose) {
+        for (Point b : pushable) {
+            if (b.distanceTo(pose.x(), pose.y()) <= PUSH_NEAR) {
+                return true;
+            }
+        }
+        return false;
     }
 
     void clear() {
@@ -87,8 +111,11 @@ final class PathFollower {
         double max = drive.maxSpeed();
         double forward = Math.abs(error) > IN_PLACE ? 0 : max * 0.8 * Math.cos(error) * Math.min(1, distance / 0.5 + 0.2);
         if (forward > 0 && frontClearance(robot) < stopDistance) {
-            drive.stop();
-            return Status.OBSTRUCTED;
+            if (!besidePushable(pose)) {
+                drive.stop();
+                return Status.OBSTRUCTED;
+            }
+            forward = Math.min(forward, max * PUSH_SPEED);
         }
         double turn = TURN_GAIN * error;
         double half = drive.wheelBase() / 2;

@@ -61,4 +61,29 @@ class DriveTest {
         assertEquals(robot.spec().maxSpeed() * dt, robot.pose().x() - before, 1e-9, "clamped at top speed");
         assertEquals(robot.pose().x(), robot.odometry().pose().x(), 1e-9, "noise-free odometry follows the body");
     }
+
+    /**
+     * A robot whose drive is dead stays a dynamic body of the robot's mass: its own drive holds it
+     * still (its velocities are set to zero each step), but a teammate driving into it moves it in
+     * the contact, about half the pusher's speed. So a dead robot in a doorway is an obstacle a
+     * team could push aside, not a wall.
+     */
+    @Test
+    void aDisabledRobot_staysPutAlone_butATeammateDrivingIntoItPushesItAlong() {
+        SimWorld world = Worlds.world(Worlds.arena(10, 10, "<start id='s0' x='1' y='1'/>"), 5);
+        SimRobot dead = world.addRobot("dead", Worlds.start(5, 5, 90), KoalaSpec.koala());
+        SimRobot pusher = world.addRobot("pusher", Worlds.start(3, 5, 0), KoalaSpec.koala());
+        dead.disable("battery");
+        for (int i = 0; i < 250; i++) {
+            world.step();
+        }
+        assertEquals(5, dead.pose().x(), 1e-9, "alone it does not move");
+        goTo(pusher, 7, 5);
+        for (int i = 0; i < 1_500; i++) {
+            world.step();
+        }
+        assertTrue(dead.pose().x() > 5.5, "pushed along in 30 s: " + dead.pose());
+        assertTrue(pusher.pose().x() > 5.3, "the pusher followed it: " + pusher.pose());
+        assertEquals(5, dead.pose().y(), 0.2, "pushed along the pusher's line: " + dead.pose());
+    }
 }

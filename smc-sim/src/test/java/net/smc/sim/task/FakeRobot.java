@@ -42,7 +42,7 @@ final class FakeRobot implements RobotHardware {
     double heading;
     double travelled;
     int bumps;
-    private double wantLeft;
+    double wantLeft;   // the commanded left wheel speed (read by tests)
     private double wantRight;
     private double left;
     private double right;

@@ -56,7 +56,7 @@ class TaskCatalogTest {
                 new Attribute("x", "double"), new Attribute("y", "double")), d.events().get(3).attributes());
         assertEquals(List.of(new Attribute("name", "String"), new Attribute("uav", "String"), new Attribute("cells", "List")),
                 d.events().get(1).attributes());
-        assertEquals(List.of("avoid", "explore", "exploredFraction", "halt", "isExploring", "merge", "shareMap"),
+        assertEquals(List.of("avoid", "explore", "exploredFraction", "halt", "isExploring", "merge", "pushAside", "shareMap"),
                 d.operations().stream().map(OperationDescription::name).toList());
     }
 
