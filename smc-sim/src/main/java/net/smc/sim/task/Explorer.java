@@ -77,7 +77,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private final boolean[] struck;
     private final Set<String> sighted = new HashSet<>();
     private final List<Zone> zones = new java.util.ArrayList<>();
-    private final List<Point> bodies = new java.util.ArrayList<>();
+    private final FailedBodies bodies = new FailedBodies();
     private boolean pushing;
     private boolean exploring;
     private int target = -1;
@@ -142,56 +142,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         Point body = new Point(x, y);
         bodies.add(body);
         // what the body hid from the ring is not hidden for good: it may be pushed away
-        hidden.removeIf(cell -> behindBody(cell % map.cols(), cell / map.cols()));
-    }
-
-    /** Unknown cells this close to a failed teammate's body may lie behind the body, not a wall, m. */
-    static final double BEHIND_BODY = 1.0;
-
-    private boolean onBody(int c, int r) {
-        Point p = map.centre(c, r);
-        for (Point body : bodies) {
-            if (p.distanceTo(body.x(), body.y()) <= BODY_REACH) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private boolean behindBody(int c, int r) {
-        Point p = map.centre(c, r);
-        for (Point body : bodies) {
-            if (p.distanceTo(body.x(), body.y()) <= BEHIND_BODY) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** A failed teammate's cells within this of its reported position are taken for its body, which may be pushed, m. */
-    static final double BODY_REACH = 0.45;
-
-    /**
-     * The map with the cells of the failed teammates' bodies ({@link #pushAside}) taken for free:
-     * the map on which the robot plans to push a body aside.
-     */
-    private OccupancyGrid withoutBodies() {
-        OccupancyGrid view = map.copy();
-        for (Point body : bodies) {
-            int reach = (int) Math.ceil(BODY_REACH / map.resolution());
-            for (int r = map.row(body.y()) - reach; r <= map.row(body.y()) + reach; r++) {
-                for (int c = map.col(body.x()) - reach; c <= map.col(body.x()) + reach; c++) {
-                    if (!map.inside(c, r)) {
-                        continue;
-                    }
-                    Point p = map.centre(c, r);
-                    while (p.distanceTo(body.x(), body.y()) <= BODY_REACH && view.isOccupied(c, r)) {
-                        view.markFree(p.x(), p.y());
-                    }
-                }
-            }
-        }
-        return view;
+        hidden.removeIf(cell -> bodies.behind(map, cell % map.cols(), cell / map.cols()));
     }
 
     /** The zones it keeps out of. */
@@ -295,7 +246,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             hardware.drive().setWheelSpeeds(back, back);
             return;
         }
-        if (target >= 0 && !frontier(pushing ? withoutBodies() : map, target % map.cols(), target / map.cols())) {
+        if (target >= 0 && !frontier(pushing ? bodies.without(map) : map, target % map.cols(), target / map.cols())) {
             target = -1;
         }
         Pose pose = hardware.odometry().pose();
@@ -354,11 +305,11 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * is, with only the body's half-width and 5 cm (a doorway narrowed on the map by a robot
      * standing in it, say, or by a stray reading); whether one was found.
      * Once told of failed teammates' bodies ({@link #pushAside}) it plans on the map with their
-     * cells taken for free ({@link #withoutBodies}), and the path follower may push them.
+     * cells taken for free ({@link FailedBodies#without}), and the path follower may push them.
      */
     private boolean chooseTarget(Pose pose) {
         boolean push = !bodies.isEmpty();
-        OccupancyGrid grid = push ? withoutBodies() : map;
+        OccupancyGrid grid = push ? bodies.without(map) : map;
         for (PathPlanner p : List.of(planner, narrow)) {
             Set<Integer> failed = new HashSet<>();
             while (true) {
@@ -373,7 +324,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                     nearSince = Double.NaN;
                     current = p;
                     pushing = push;
-                    follower.pushable(pushing ? bodies : List.of());
+                    follower.pushable(pushing ? bodies.points() : List.of());
                     obstructed = 0;
                     follower.follow(path.get(), map.resolution());
                     return true;
@@ -390,7 +341,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     /** Plans again to the current target on the map as it is now; whether a way is left. */
     private boolean replan(Pose pose) {
         Point p = map.centre(target % map.cols(), target / map.cols());
-        Optional<List<Point>> path = current.plan(pushing ? withoutBodies() : map, new Point(pose.x(), pose.y()), p, zones, 0);
+        Optional<List<Point>> path = current.plan(pushing ? bodies.without(map) : map, new Point(pose.x(), pose.y()), p, zones, 0);
         path.ifPresent(w -> follower.follow(w, map.resolution()));
         return path.isPresent();
     }
@@ -418,10 +369,10 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
 
     /**
      * The same on {@code grid}: the map, or the map without the failed teammates' bodies
-     * ({@link #withoutBodies}), on which the cells of a body the ring struck may be frontiers.
+     * ({@link FailedBodies#without}), on which the cells of a body the ring struck may be frontiers.
      */
     private boolean frontier(OccupancyGrid grid, int c, int r) {
-        if (!grid.isFree(c, r) || struck[c + r * map.cols()] && (grid == map || !onBody(c, r))) {
+        if (!grid.isFree(c, r) || struck[c + r * map.cols()] && (grid == map || !bodies.on(map, c, r))) {
             return false;
         }
         int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -441,7 +392,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         int r = cell / map.cols();
         int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int[] s : steps) {
-            if (map.inside(c + s[0], r + s[1]) && !map.isKnown(c + s[0], r + s[1]) && !behindBody(c + s[0], r + s[1])) {
+            if (map.inside(c + s[0], r + s[1]) && !map.isKnown(c + s[0], r + s[1]) && !bodies.behind(map, c + s[0], r + s[1])) {
                 hidden.add(c + s[0] + (r + s[1]) * map.cols());
             }
         }

@@ -1,0 +1,74 @@
+package net.smc.sim.task;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import net.smc.sim.map.OccupancyGrid;
+import net.smc.sim.map.Point;
+
+/**
+ * Where failed teammates' bodies lie, as an {@link Explorer} was told ({@link Explorer#pushAside}).
+ * A dead robot's body can be pushed, so its cells may be planned through, and the unknown cells just
+ * beyond it may lie behind the body rather than behind a wall.
+ */
+final class FailedBodies {
+    /** A failed teammate's cells within this of its reported position are taken for its body, m. */
+    static final double BODY_REACH = 0.45;
+    /** Unknown cells this close to a body may lie behind the body, not a wall, m. */
+    static final double BEHIND_BODY = 1.0;
+
+    private final List<Point> bodies = new ArrayList<>();
+
+    void add(Point body) {
+        bodies.add(body);
+    }
+
+    boolean isEmpty() {
+        return bodies.isEmpty();
+    }
+
+    /** The bodies' positions, for the path follower, which may push into them. */
+    List<Point> points() {
+        return List.copyOf(bodies);
+    }
+
+    /** Whether the centre of cell (c, r) of {@code map} is within a body's reach. */
+    boolean on(OccupancyGrid map, int c, int r) {
+        return near(map, c, r, BODY_REACH);
+    }
+
+    /** Whether the centre of cell (c, r) of {@code map} may lie behind a body. */
+    boolean behind(OccupancyGrid map, int c, int r) {
+        return near(map, c, r, BEHIND_BODY);
+    }
+
+    private boolean near(OccupancyGrid map, int c, int r, double metres) {
+        Point p = map.centre(c, r);
+        for (Point body : bodies) {
+            if (p.distanceTo(body.x(), body.y()) <= metres) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** A copy of {@code map} with the bodies' cells taken for free: the map on which to plan a push. */
+    OccupancyGrid without(OccupancyGrid map) {
+        OccupancyGrid view = map.copy();
+        int reach = (int) Math.ceil(BODY_REACH / map.resolution());
+        for (Point body : bodies) {
+            for (int r = map.row(body.y()) - reach; r <= map.row(body.y()) + reach; r++) {
+                for (int c = map.col(body.x()) - reach; c <= map.col(body.x()) + reach; c++) {
+                    if (!map.inside(c, r)) {
+                        continue;
+                    }
+                    Point p = map.centre(c, r);
+                    while (p.distanceTo(body.x(), body.y()) <= BODY_REACH && view.isOccupied(c, r)) {
+                        view.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        return view;
+    }
+}
