@@ -58,23 +58,17 @@ final class Recruiter {
     /** The roles the policies asked for {@link #deciding}'s description for: its seat is chosen among them. */
     private final Set<String> decidedRoles = new LinkedHashSet<>();
 
-    /**
-     * How many capability requests for a role may be out beyond its open seats. A manager asks no
-     * more vehicles than it could seat and this margin (for those that turn out taken or unable):
-     * in a large team every free vehicle in reach answers every manager's discovery, and asking
-     * each of them costs both a request and a full description for a seat most will not get. The
-     * others wait in {@link TeamState#deferredAsks} and are asked as requests out end unseated.
-     */
-    static final int ASK_MARGIN = 2;
-
     /** Discovers at once (rate-limited by Supervisor), when a seat offered to a vehicle opens again. */
     private final Runnable rediscover;
     /** Serves policy files to assignees and children. */
     private final PolicyServer policies;
+    /** How many vehicles are asked for their full descriptions at a time. */
+    private final CapabilityAsks asks;
 
     Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
         this.rediscover = rediscover;
         this.policies = new PolicyServer(ctx, st);
+        this.asks = new CapabilityAsks(ctx, st);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -128,7 +122,7 @@ final class Recruiter {
         // A vehicle that presented no credential (or a cell without authentication) gives PonderTalk nil.
         Object credential = ctx.host().credentialOf(vehicle).<Object>map(c -> c).orElse(Nil.NIL);
         Refusal before = st.refused.get(vehicle);
-        if (before != null && before.stands(refusal(summary, credential, now), refusalMillis())) {
+        if (before != null && before.stands(st.refusal(summary, credential, now), ctx.timing().refusalMillis())) {
             return; // the same policies passed over the same vehicle for the same open seats: they would again
         }
         st.refused.remove(vehicle);
@@ -142,7 +136,7 @@ final class Recruiter {
         }
         if (!askedFor) {
             // Taken after the raise: a change the policies made while deciding is part of their decision.
-            st.refused.put(vehicle, refusal(summary, credential, now));
+            st.refused.put(vehicle, st.refusal(summary, credential, now));
         } else if (!decidedRoles.isEmpty()) {
             Set<String> roles = new LinkedHashSet<>(decidedRoles);
             decidedRoles.clear();
@@ -162,7 +156,7 @@ final class Recruiter {
                 .min(this::preferVacant);
         if (seat.isEmpty()) {
             // No seat asked for that the vehicle can take: while the same stands, none would be found again.
-            st.refused.put(uav, refusal(summary, credential, ctx.clock().nowMillis()));
+            st.refused.put(uav, st.refusal(summary, credential, ctx.clock().nowMillis()));
             return;
         }
         if (st.owned.values().stream().anyMatch(o -> uav.equals(o.pendingFor))) {
@@ -171,30 +165,13 @@ final class Recruiter {
         giveSeat(uav, summary, seat.get());
     }
 
-    /** The key of a refusal now: what the vehicle presented, the policies' version and this cell's open seats. */
-    private Refusal refusal(CapabilitySummary summary, Object credential, long now) {
-        return new Refusal(summary, credential, ctx.host().policyVersion(),
-                st.owned.keySet().stream().filter(st::open).toList(), now);
-    }
-
-    /**
-     * How long a refusal is remembered at most: four failure timeouts (12 s in the reconnaissance
-     * mission). Within it a free vehicle that keeps answering discovery is put to the policies
-     * again only when what it presents (capability summary, credential), the policies (their
-     * version) or this cell's open seats change; the bound covers conditions that read other state
-     * (counts, the time, what a task observed).
-     */
-    long refusalMillis() {
-        return 4 * ctx.timing().failureTimeoutMillis();
-    }
-
     /** Asked by a policy ({@code root/discovery fullCapReq: uav role: r}): request the full description. */
     void requestFullCapability(String uav, String role) {
         if (ctx.slots().mission().role(role).isEmpty()) {
             ctx.emit(CellEvent.Kind.REJECTED, "policy asked for unknown role '" + role + "' for " + uav);
             return;
         }
-        if (st.owned.keySet().stream().noneMatch(s -> s.role().equals(role) && st.open(s))) {
+        if (asks.openSeats(role) == 0) {
             return; // nothing to give for that role now
         }
         st.refused.remove(uav);
@@ -208,8 +185,8 @@ final class Recruiter {
             pending.roles.add(role);
             return;
         }
-        if (asksOut(role) >= openSeats(role) + ASK_MARGIN) {
-            st.deferredAsks.computeIfAbsent(uav, v -> new LinkedHashSet<>()).add(role);
+        if (asks.full(role)) {
+            asks.defer(uav, role);
             return; // enough vehicles asked for this role's open seats: this one waits its turn
         }
         Optional<Address> to = ctx.address(uav);
@@ -224,14 +201,6 @@ final class Recruiter {
                 lookAgain();
             }
         }));
-    }
-
-    private long openSeats(String role) {
-        return st.owned.keySet().stream().filter(s -> s.role().equals(role) && st.open(s)).count();
-    }
-
-    private long asksOut(String role) {
-        return st.capabilityRequests.values().stream().filter(p -> p.roles.contains(role)).count();
     }
 
     /**
@@ -271,33 +240,8 @@ final class Recruiter {
         }
     }
 
-    /**
-     * Asks deferred vehicles, oldest first, as far as the margin allows; forgets those that are now
-     * children, already asked, or not heard within the failure timeout, and roles with no open seat.
-     */
     private void askDeferred() {
-        long now = ctx.clock().nowMillis();
-        for (String uav : List.copyOf(st.deferredAsks.keySet())) {
-            Heard heard = st.heard.get(uav);
-            if (heard == null || now - heard.atMillis() > ctx.timing().failureTimeoutMillis()
-                    || st.children.containsKey(uav) || st.capabilityRequests.containsKey(uav)) {
-                st.deferredAsks.remove(uav);
-                continue;
-            }
-            Set<String> roles = st.deferredAsks.get(uav);
-            for (String role : List.copyOf(roles)) {
-                long open = openSeats(role);
-                if (open == 0) {
-                    roles.remove(role);
-                } else if (asksOut(role) < open + ASK_MARGIN) {
-                    roles.remove(role);
-                    requestFullCapability(uav, role);
-                }
-            }
-            if (roles.isEmpty()) {
-                st.deferredAsks.remove(uav);
-            }
-        }
+        asks.askDeferred(this::requestFullCapability);
     }
 
     void onCapabilityReply(Envelope env, CapabilityReply r) {
@@ -331,7 +275,7 @@ final class Recruiter {
             Heard heard = st.heard.get(env.sender());
             if (heard != null && known == null) {
                 Object credential = ctx.host().credentialOf(env.sender()).<Object>map(c -> c).orElse(Nil.NIL);
-                st.refused.put(env.sender(), refusal(heard.summary(), credential, ctx.clock().nowMillis()));
+                st.refused.put(env.sender(), st.refusal(heard.summary(), credential, ctx.clock().nowMillis()));
             }
             return;
         }
@@ -542,7 +486,7 @@ final class Recruiter {
         st.abandoned.values().removeIf(until -> now >= until);
         st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
         st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
-        st.refused.values().removeIf(r -> now - r.atMillis() >= refusalMillis());
+        st.refused.values().removeIf(r -> now - r.atMillis() >= ctx.timing().refusalMillis());
         policies.expire(now);
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();

@@ -147,6 +147,12 @@ final class TeamState {
         }
     }
 
+    /** The key of a refusal now: what the vehicle presented, the policies' version and this cell's open seats. */
+    Refusal refusal(CapabilitySummary summary, Object credential, long now) {
+        return new Refusal(summary, credential, ctx.host().policyVersion(), owned.keySet().stream().filter(this::open).toList(),
+                now);
+    }
+
     static final class PendingCapability {
         final Set<String> roles = new LinkedHashSet<>();
         final long sinceMillis;

@@ -95,6 +95,17 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
         return 2 * senderSettings().failureBoundMillis() + failureTimeoutMillis + comTimeoutMillis;
     }
 
+    /**
+     * How long a manager remembers that its policies passed over a free vehicle: four failure
+     * timeouts (12 s in the reconnaissance mission). Within it a vehicle that keeps answering
+     * discovery is put to the policies again only when what it presents (capability summary,
+     * credential), the policies (their version) or the manager's open seats change; the bound covers
+     * conditions that read other state (counts, the time, what a task observed).
+     */
+    public long refusalMillis() {
+        return 4 * failureTimeoutMillis;
+    }
+
     public long leaseMillis() {
         return failureTimeoutMillis - comTimeoutMillis / 2;
     }

@@ -82,7 +82,7 @@ class SetupTimeRunTest {
      * Managers give seats from the capability summary of the discovery reply, and ask for no full
      * description while the team forms: at 100 roles, with the radio model's losses, not one
      * capability request. (Asking every vehicle that answered sent about 4.2 requests per seat,
-     * and asking only as many as a role has open seats and a margin, Recruiter.ASK_MARGIN, about 2.)
+     * and asking only as many as a role has open seats and a margin, CapabilityAsks.ASK_MARGIN, about 2.)
      */
     @Test
     void managersAskForNoFullDescriptionWhileTheTeamForms() throws Exception {
