@@ -128,6 +128,22 @@ public final class OccupancyGrid {
         return known[i] && score[i] <= 0;
     }
 
+    /**
+     * Whether an occupied cell touches this one (8-connected; off the grid does not count): a
+     * frontier along a wall mostly looks into the wall, and chasing it cell by cell costs a trip
+     * per cell for nothing.
+     */
+    public boolean besideOccupied(int col, int row) {
+        for (int dr = -1; dr <= 1; dr++) {
+            for (int dc = -1; dc <= 1; dc++) {
+                if ((dr != 0 || dc != 0) && inside(col + dc, row + dr) && isOccupied(col + dc, row + dr)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     /** A free cell with an unknown neighbour (4-connected): where exploring pays. */
     public boolean isFrontier(int col, int row) {
         if (!isFree(col, row)) {

@@ -43,6 +43,8 @@ import net.smc.sim.map.Zone;
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
+    /** The steps to a cell's 4-connected neighbours. */
+    private static final int[][] FOUR_NEIGHBOURS = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     /** Seconds of driving without moving 5 cm after which the target is given up. */
     private static final double STALL_SECONDS = 4;
     /** Metres kept between the robot's centre and an occupied cell's centre when planning. */
@@ -84,9 +86,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private double reported;
     private double backOffUntil = -1;
     private int sharedKnown = -1;
-    private double stallX = Double.NaN;
-    private double stallY;
-    private double stallSince;
+    private final StallWatch stall = new StallWatch(STALL_SECONDS);
     private int obstructed;
     private double now;
     private double nearSince = Double.NaN;
@@ -282,22 +282,11 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 }
             }
             default -> {
-                if (stalled(time, pose)) {
+                if (stall.stalled(time, pose)) {
                     giveUpTarget(time);
                 }
             }
         }
-    }
-
-    /** Whether the robot has moved less than 5 cm in the last {@link #STALL_SECONDS} while driving (wedged on a corner, say). */
-    private boolean stalled(double time, Pose pose) {
-        if (Double.isNaN(stallX) || Math.hypot(pose.x() - stallX, pose.y() - stallY) > 0.05) {
-            stallX = pose.x();
-            stallY = pose.y();
-            stallSince = time;
-            return false;
-        }
-        return time - stallSince > STALL_SECONDS;
     }
 
     /**
@@ -354,7 +343,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         target = -1;
         follower.clear();
         backOffUntil = time + 0.5;
-        stallX = Double.NaN;
+        stall.reset();
     }
 
     /**
@@ -375,8 +364,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         if (!grid.isFree(c, r) || struck[c + r * map.cols()] && (grid == map || !bodies.on(map, c, r))) {
             return false;
         }
-        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        for (int[] s : steps) {
+        for (int[] s : FOUR_NEIGHBOURS) {
             int nc = c + s[0];
             int nr = r + s[1];
             if (map.inside(nc, nr) && !grid.isKnown(nc, nr) && !hidden.contains(nc + nr * map.cols())) {
@@ -390,8 +378,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private void hide(int cell) {
         int c = cell % map.cols();
         int r = cell / map.cols();
-        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        for (int[] s : steps) {
+        for (int[] s : FOUR_NEIGHBOURS) {
             if (map.inside(c + s[0], r + s[1]) && !map.isKnown(c + s[0], r + s[1]) && !bodies.behind(map, c + s[0], r + s[1])) {
                 hidden.add(c + s[0] + (r + s[1]) * map.cols());
             }
@@ -401,21 +388,6 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private boolean near(Pose pose, int cell, double metres) {
         Point p = map.centre(cell % map.cols(), cell / map.cols());
         return Math.hypot(p.x() - pose.x(), p.y() - pose.y()) <= metres;
-    }
-
-    /**
-     * Whether an occupied cell touches this one (8-connected): a frontier along a wall mostly
-     * looks into the wall, and chasing it cell by cell costs a trip per cell for nothing.
-     */
-    private boolean besideObstacle(OccupancyGrid grid, int c, int r) {
-        for (int dr = -1; dr <= 1; dr++) {
-            for (int dc = -1; dc <= 1; dc++) {
-                if ((dr != 0 || dc != 0) && map.inside(c + dc, r + dr) && grid.isOccupied(c + dc, r + dr)) {
-                    return true;
-                }
-            }
-        }
-        return false;
     }
 
     /**
@@ -437,11 +409,10 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             int c = cell % cols;
             int r = cell / cols;
             if (cell != start && frontier(grid, c, r) && !setAside.holds(c, r, now) && !failed.contains(cell)
-                    && !besideObstacle(grid, c, r)) {
+                    && !grid.besideOccupied(c, r)) {
                 return Optional.of(cell);
             }
-            int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-            for (int[] s : steps) {
+            for (int[] s : FOUR_NEIGHBOURS) {
                 int nc = c + s[0];
                 int nr = r + s[1];
                 if (!map.inside(nc, nr)) {
