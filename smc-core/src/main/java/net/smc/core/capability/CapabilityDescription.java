@@ -33,7 +33,17 @@ public record CapabilityDescription(String vehicle, SortedSet<String> resources,
         return requirement.isMetBy(this);
     }
 
-    /** The description of the named task, if the vehicle has it. */
+    /** Whether the vehicle has a task of that name: {@code taskNames().contains(name)} without building the set. */
+    public boolean hasTask(String name) {
+        for (TaskDescription t : tasks) {
+            if (t.task().equals(name)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+        /** The description of the named task, if the vehicle has it. */
     public java.util.Optional<TaskDescription> task(String name) {
         return tasks.stream().filter(t -> t.task().equals(name)).findFirst();
     }

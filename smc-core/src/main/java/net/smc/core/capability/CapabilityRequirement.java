@@ -46,7 +46,15 @@ public record CapabilityRequirement(Set<String> resources, Set<String> tasks) {
     }
 
     public boolean isMetBy(CapabilityDescription description) {
-        return isMetBy(description.summary());
+        if (!description.resources().containsAll(resources)) {
+            return false;
+        }
+        for (String task : tasks) {
+            if (!description.hasTask(task)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The part of this requirement the vehicle lacks; empty when it is met. */

@@ -30,6 +30,21 @@ final class Reports {
     private static final String SIZE = "#size";
     private static final String HOSTED = "#hosted";
 
+    /**
+     * The report last built, and what it was built from: {@link #reportValues} builds it again only
+     * when one of those moved. Its inputs are this cell's seats and children and their seats (the
+     * link version), the children's own reports ({@link #childReports}), the state set by
+     * {@link #reportState}, whether the lease has lapsed, the tasks' states and the mission's slots.
+     */
+    private List<Object> report;
+    private long reportLinks = -1;
+    private long reportChildReports = -1;
+    private boolean reportSuspended;
+    private List<Object> reportTaskStates;
+    private Slots reportSlots;
+    /** Moves whenever a child's report or this cell's reported state is taken in. */
+    private long childReports;
+
     Reports(TeamContext ctx, TeamState st, TeamCounts counts, Recruiter recruiter) {
         this.ctx = ctx;
         this.st = st;
@@ -60,6 +75,7 @@ final class Reports {
         counts.remove(HOSTED);
         child.subtree = counts;
         child.state = state;
+        childReports++;
         this.counts.updateMissionState();
     }
 
@@ -117,7 +133,36 @@ final class Reports {
         child.consistent = !conflict;
     }
 
+    /**
+     * The values of the report this cell sends its parent: the held roles' counts in its subtree,
+     * its size, how many seats in it are hosted, its seats and its state. Built again only when one
+     * of its inputs moved (see {@link #report}); otherwise the same list as last time. With
+     * {@link ReportChecks} on, every call also builds it afresh and counts a kept list that differs.
+     */
     List<Object> reportValues() {
+        boolean suspended = st.suspended();
+        List<Object> tasks = ctx.host().taskStates();
+        long links = st.linkVersion.getAsLong();
+        boolean kept = report != null && links == reportLinks && childReports == reportChildReports
+                && suspended == reportSuspended && ctx.slots() == reportSlots && tasks.equals(reportTaskStates);
+        if (kept && !ReportChecks.on()) {
+            return report;
+        }
+        List<Object> fresh = buildReport(tasks);
+        if (kept) {
+            ReportChecks.compared(fresh.equals(report));
+            return report;
+        }
+        report = fresh;
+        reportLinks = links;
+        reportChildReports = childReports;
+        reportSuspended = suspended;
+        reportTaskStates = tasks;
+        reportSlots = ctx.slots();
+        return fresh;
+    }
+
+    private List<Object> buildReport(List<Object> taskStates) {
         List<Object> v = new ArrayList<>();
         counts.heldSubtreeCounts().forEach((role, n) -> {
             v.add(role);
@@ -130,17 +175,18 @@ final class Reports {
         v.add("#seats");
         v.add(st.seats.stream().map(Seat::toString).toList());
         List<Object> state = new ArrayList<>(st.reportedState);
-        state.addAll(ctx.host().taskStates());
+        state.addAll(taskStates);
         if (!state.isEmpty() && v.size() < 60) {
             v.add("#state");
             v.add(state);
         }
-        return v;
+        return java.util.Collections.unmodifiableList(v);
     }
 
     /** Sets the state this vehicle reports to its parent (its position, say), handed over if it fails. */
     void reportState(List<Object> state) {
         st.reportedState = List.copyOf(state);
+        childReports++;
     }
 
     List<Object> handedOver() {

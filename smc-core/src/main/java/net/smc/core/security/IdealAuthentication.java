@@ -1,8 +1,13 @@
 package net.smc.core.security;
 
-import java.nio.ByteBuffer;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
@@ -52,6 +57,11 @@ import net.smc.core.transport.Transport;
  * the same vehicles many times (a fault sweep, an experiment's runs) checks each credential's
  * signature the first time only, and its validity period and mission every time.
  *
+ * <p>Everything kept about one address (its accepted credential, incarnation, seal counter and
+ * endpoint) is one {@link Peer}, found by a single look-up per datagram; each endpoint keeps its
+ * replay windows in an array indexed by the sender's peer number, so receiving costs one look-up of
+ * the sender's address and none for its window.
+ *
  * <p>One instance serves one simulated network; all calls on the simulation's thread.
  */
 public final class IdealAuthentication {
@@ -64,13 +74,11 @@ public final class IdealAuthentication {
 
     private final TrustAnchor trust;
     private final Clock clock;
-    private final Map<Address, Credential> vouched = new HashMap<>();
+    /** Every address an endpoint was attached at, with what is known of it. */
+    private final Map<Address, Peer> peers = new HashMap<>();
+    /** The same, by {@link Peer#index}. */
+    private final List<Peer> byIndex = new ArrayList<>();
     private final Map<String, Credential> byVehicle = new HashMap<>();
-    /** The last seal counter of each address, kept across its endpoints' restarts (an endpoint holds its own). */
-    private final Map<Address, long[]> counters = new HashMap<>();
-    private final Map<Address, Integer> incarnations = new HashMap<>();
-    /** The endpoint attached at each address now (its latest incarnation). */
-    private final Map<Address, Endpoint> endpoints = new HashMap<>();
     private final long key;
     private long dropped;
     private long tampered;
@@ -99,15 +107,16 @@ public final class IdealAuthentication {
         Objects.requireNonNull(inner, "inner");
         Objects.requireNonNull(credential, "credential");
         CredentialStatus status = verify(credential);
+        Peer peer = peers.computeIfAbsent(inner.localAddress(), this::newPeer);
         if (status == CredentialStatus.VALID) {
-            vouched.put(inner.localAddress(), credential);
+            peer.vouched = credential;
             byVehicle.put(credential.vehicleId(), credential);
         } else {
-            vouched.remove(inner.localAddress());
+            peer.vouched = null;
         }
-        incarnations.merge(inner.localAddress(), 1, Integer::sum);
-        Endpoint endpoint = new Endpoint(inner, status, incarnations.get(inner.localAddress()));
-        endpoints.put(inner.localAddress(), endpoint);
+        peer.incarnation++;
+        Endpoint endpoint = new Endpoint(inner, status, peer);
+        peer.endpoint = endpoint;
         return endpoint;
     }
 
@@ -119,8 +128,8 @@ public final class IdealAuthentication {
      * the receiver's state changes in between.
      */
     public boolean dropsUnverified(Address at, byte[] datagram) {
-        Endpoint endpoint = endpoints.get(at);
-        return endpoint != null && endpoint.ignorable(datagram);
+        Peer peer = peers.get(at);
+        return peer != null && peer.endpoint.ignorable(datagram);
     }
 
     /** {@link TrustAnchor#verify}, with the signature's verification remembered across instances. */
@@ -156,12 +165,20 @@ public final class IdealAuthentication {
         return ignoredUnverified;
     }
 
-    private byte[] seal(Address from, long[] last, Address to, int toIncarnation, byte[] payload) {
-        long counter = Math.max(last[0] + 1, clock.nowMillis() << 20);
-        last[0] = counter;
-        ByteBuffer out = ByteBuffer.allocate(payload.length + SEAL_BYTES);
-        out.putLong(counter).put(payload).putLong(tag(from, to, toIncarnation, counter, payload, 0, payload.length));
-        return out.array();
+    private Peer newPeer(Address address) {
+        Peer peer = new Peer(byIndex.size());
+        byIndex.add(peer);
+        return peer;
+    }
+
+    private byte[] seal(Peer from, Address fromAddress, Address to, int toIncarnation, byte[] payload) {
+        long counter = Math.max(from.counter + 1, clock.nowMillis() << 20);
+        from.counter = counter;
+        byte[] out = new byte[payload.length + SEAL_BYTES];
+        LONGS.set(out, 0, counter);
+        System.arraycopy(payload, 0, out, PAYLOAD_OFFSET, payload.length);
+        LONGS.set(out, PAYLOAD_OFFSET + payload.length, tag(fromAddress, to, toIncarnation, counter, payload, 0, payload.length));
+        return out;
     }
 
     /** FNV-1a over the sealed fields, started from and finished with the key (a 64-bit mix). */
@@ -187,6 +204,27 @@ public final class IdealAuthentication {
         return h;
     }
 
+    /** Big-endian longs in a byte array: the seal's counter and tag. */
+    private static final VarHandle LONGS = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.BIG_ENDIAN);
+
+    /**
+     * What is known of one address, over all its endpoints' lives: the credential accepted from it
+     * (null when none), how many endpoints were attached there, the last seal counter it used (kept
+     * across restarts, as the real sender keeps it) and the endpoint attached there now.
+     */
+    private static final class Peer {
+        /** A small number of its own, from 0: where receivers keep their replay window for it. */
+        final int index;
+        Credential vouched;
+        int incarnation;
+        long counter = Long.MIN_VALUE;
+        Endpoint endpoint;
+
+        Peer(int index) {
+            this.index = index;
+        }
+    }
+
     /** Counter and tag, 8 bytes each. */
     static final int SEAL_BYTES = 16;
     /**
@@ -202,17 +240,18 @@ public final class IdealAuthentication {
     public final class Endpoint extends ForwardingTransport implements AuthenticatingTransport {
         private final CredentialStatus status;
         private final int incarnation;
-        private final Map<Address, ReplayWindow> windows = new HashMap<>();
-        /** This address's last seal counter (shared with its later incarnations). */
-        private final long[] counter;
+        /** The replay window of each sender heard from, by its {@link Peer#index}; null for one not heard from. */
+        private ReplayWindow[] windows = new ReplayWindow[0];
+        /** This address's record (its seal counter is shared with its later incarnations). */
+        private final Peer self;
         private AuthenticatedReceiver receiver;
         private Predicate<byte[]> unverifiedFilter = payload -> false;
 
-        private Endpoint(Transport inner, CredentialStatus status, int incarnation) {
+        private Endpoint(Transport inner, CredentialStatus status, Peer self) {
             super(inner);
             this.status = status;
-            this.incarnation = incarnation;
-            this.counter = counters.computeIfAbsent(inner.localAddress(), a -> new long[] {Long.MIN_VALUE});
+            this.incarnation = self.incarnation;
+            this.self = self;
             inner.setReceiver(this::onDatagram);
         }
 
@@ -224,12 +263,13 @@ public final class IdealAuthentication {
 
         @Override
         public void send(Address to, byte[] data) {
-            inner.send(to, seal(localAddress(), counter, to, incarnations.getOrDefault(to, 0), data));
+            Peer peer = peers.get(to);
+            inner.send(to, seal(self, localAddress(), to, peer == null ? 0 : peer.incarnation, data));
         }
 
         @Override
         public void broadcast(byte[] data) {
-            inner.broadcast(seal(localAddress(), counter, null, 0, data));
+            inner.broadcast(seal(self, localAddress(), null, 0, data));
         }
 
         /** What the check of this endpoint's own credential found. */
@@ -269,7 +309,7 @@ public final class IdealAuthentication {
         /** Whether {@code data} (sealed) carries a payload the receiver would ignore: read, not checked. */
         boolean ignorable(byte[] data) {
             return data.length >= SEAL_BYTES
-                    && unverifiedFilter.test(java.util.Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+                    && unverifiedFilter.test(Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
         }
 
         private void onDatagram(Address from, byte[] data) {
@@ -277,7 +317,8 @@ public final class IdealAuthentication {
                 ignoredUnverified++;
                 return;
             }
-            Credential sender = vouched.get(from);
+            Peer peer = peers.get(from);
+            Credential sender = peer == null ? null : peer.vouched;
             if (sender == null || receiver == null) {
                 dropped++;
                 return;
@@ -286,25 +327,35 @@ public final class IdealAuthentication {
                 tampered++;
                 return;
             }
-            ByteBuffer in = ByteBuffer.wrap(data);
-            long counter = in.getLong(0);
-            long tag = in.getLong(data.length - 8);
+            long counter = (long) LONGS.get(data, 0);
+            long tag = (long) LONGS.get(data, data.length - 8);
             int length = data.length - SEAL_BYTES;
             if (tag != tag(from, localAddress(), incarnation, counter, data, 8, length)
                     && tag != tag(from, null, 0, counter, data, 8, length)) {
                 tampered++;
                 return;
             }
-            ReplayWindow window = windows.computeIfAbsent(from, a -> new ReplayWindow(REPLAY_WINDOW));
+            ReplayWindow window = windowOf(peer);
             long sentMillis = counter >> 20;
             if (Math.abs(clock.nowMillis() - sentMillis) > FRESHNESS_MILLIS || !window.isFresh(counter)) {
                 replayed++;
                 return;
             }
             window.mark(counter, sentMillis);
-            byte[] payload = new byte[length];
-            System.arraycopy(data, 8, payload, 0, length);
-            receiver.onMessage(sender.vehicleId(), from, Protection.PAIR_MAC, payload);
+            receiver.onMessage(sender.vehicleId(), from, Protection.PAIR_MAC,
+                    Arrays.copyOfRange(data, PAYLOAD_OFFSET, PAYLOAD_OFFSET + length));
+        }
+
+        private ReplayWindow windowOf(Peer sender) {
+            if (sender.index >= windows.length) {
+                windows = Arrays.copyOf(windows, Math.max(sender.index + 1, Math.min(byIndex.size(), 2 * windows.length)));
+            }
+            ReplayWindow window = windows[sender.index];
+            if (window == null) {
+                window = new ReplayWindow(REPLAY_WINDOW);
+                windows[sender.index] = window;
+            }
+            return window;
         }
     }
 }

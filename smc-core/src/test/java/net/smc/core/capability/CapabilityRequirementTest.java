@@ -36,6 +36,43 @@ class CapabilityRequirementTest {
         assertFalse(r.isMetBy(UAV.summary()));
     }
 
+    /**
+     * A description is matched without building its summary: over every requirement drawn from a
+     * few resources and tasks (some the vehicle has, some not), the answer is the summary's.
+     */
+    @Test
+    void isMetBy_aDescription_answersAsItsSummaryForEveryRequirement() {
+        List<String> resources = List.of("motion", "video", "chemical");
+        List<String> tasks = List.of("Explorer", "Relay", "Surveyor");
+        int met = 0;
+        for (int rm = 0; rm < 1 << resources.size(); rm++) {
+            for (int tm = 0; tm < 1 << tasks.size(); tm++) {
+                Set<String> rs = new java.util.HashSet<>();
+                Set<String> ts = new java.util.HashSet<>();
+                for (int i = 0; i < 3; i++) {
+                    if ((rm >> i & 1) != 0) {
+                        rs.add(resources.get(i));
+                    }
+                    if ((tm >> i & 1) != 0) {
+                        ts.add(tasks.get(i));
+                    }
+                }
+                CapabilityRequirement r = CapabilityRequirement.of(rs, ts);
+                assertEquals(r.isMetBy(UAV.summary()), r.isMetBy(UAV), r.describe());
+                met += r.isMetBy(UAV) ? 1 : 0;
+            }
+        }
+        assertEquals(16, met, "requirements within motion, video, Explorer and Relay");
+    }
+
+    @Test
+    void hasTask_namesExactlyTheTasksOfTheDescription() {
+        assertTrue(UAV.hasTask("Explorer"));
+        assertTrue(UAV.hasTask("Relay"));
+        assertFalse(UAV.hasTask("Surveyor"));
+        assertFalse(UAV.hasTask("explorer"));
+    }
+
     @Test
     void theEmptyRequirement_isMetByAnyVehicle() {
         assertTrue(CapabilityRequirement.none().isMetBy(CapabilityDescription.of("bare", Set.of(), List.of())));

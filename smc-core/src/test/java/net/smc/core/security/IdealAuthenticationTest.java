@@ -146,4 +146,26 @@ class IdealAuthenticationTest {
         assertEquals(List.of("uav-a:mine"), heardByB);
         assertEquals(3, ideal.tampered());
     }
+
+    @Test
+    void eachSenderHasItsOwnReplayWindow_andARestartedSenderIsHeardAgain() {
+        Address c = Address.loopback(4003);
+        IdealAuthentication.Endpoint endpointC = ideal.wrap(network.attach(c), team.identity("uav-c").credential());
+        endpointC.send(b, "c1".getBytes(StandardCharsets.UTF_8));
+        scheduler.runFor(100);
+        byte[] fromC = onAir.get(0);
+        sendAndDeliver("a1");
+        network.inject(c, b, fromC, 0);
+        sendAndDeliver("a2");
+        network.crash(a);
+        IdealAuthentication.Endpoint again = ideal.wrap(network.restart(a), team.identity("uav-a").credential());
+        again.send(b, "a3".getBytes(StandardCharsets.UTF_8));
+        endpointB.send(a, "to the new a".getBytes(StandardCharsets.UTF_8));
+        List<String> heardByNewA = new ArrayList<>();
+        again.setAuthenticatedReceiver((sender, from, protection, payload) -> heardByNewA.add(sender));
+        scheduler.runFor(100);
+        assertEquals(List.of("uav-c:c1", "uav-a:a1", "uav-a:a2", "uav-a:a3"), heardByB);
+        assertEquals(1, ideal.replayed(), "c's datagram again");
+        assertEquals(List.of("uav-b"), heardByNewA, "a unicast sealed for the current incarnation");
+    }
 }
