@@ -1,8 +1,6 @@
 package net.smc.core.cell;
 
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 
 import net.smc.core.cell.TeamState.Child;
 import net.smc.core.cell.TeamState.Parent;
@@ -38,12 +36,7 @@ final class Membership {
     private final BackupCommander backup;
     private final Reports reports;
     /** Send times of recent heartbeats, by their {@linkplain Echo#tagOf tag}, to date the parent's echoes. */
-    private final Map<Long, Long> heartbeatSentAt = new LinkedHashMap<>(32, 0.75f, false) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
-            return size() > 64;
-        }
-    };
+    private final HeartbeatTimes heartbeatSentAt = new HeartbeatTimes();
     /** Heartbeats until an unchanged subtree report is sent again. */
     private int reportCountdown;
     /** Copies of the latest changed report still to send, one a heartbeat. */
@@ -172,8 +165,8 @@ final class Membership {
     private void renew(long tag) {
         st.lastStatusMillis = ctx.clock().nowMillis();
         unconfirmed = tag == 0;
-        Long sentAt = tag == 0 ? null : heartbeatSentAt.get(tag);
-        if (sentAt != null && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
+        long sentAt = tag == 0 ? HeartbeatTimes.NONE : heartbeatSentAt.sentAt(tag);
+        if (sentAt != HeartbeatTimes.NONE && sentAt + ctx.timing().leaseMillis() > st.leaseUntilMillis) {
             st.leaseUntilMillis = sentAt + ctx.timing().leaseMillis();   // a later end only: see TeamState.linkVersion
             st.lapseNoted = false;
         }

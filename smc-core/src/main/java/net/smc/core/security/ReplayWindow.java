@@ -24,13 +24,16 @@ final class ReplayWindow {
 
     /** Whether {@code counter} has not been accepted before and is newer than everything forgotten. */
     boolean isFresh(long counter) {
+        if (size == 0 || counter > seen[size - 1]) {
+            return counter > floor;   // newer than every counter kept: the usual case, no search
+        }
         return counter > floor && Arrays.binarySearch(seen, 0, size, counter) < 0;
     }
 
     /** Records {@code counter} (which must be fresh), sent at {@code timestampMillis}; forgets the oldest when full. */
     void mark(long counter, long timestampMillis) {
         newestTimestampMillis = Math.max(newestTimestampMillis, timestampMillis);
-        int at = -Arrays.binarySearch(seen, 0, size, counter) - 1;
+        int at = size == 0 || counter > seen[size - 1] ? size : -Arrays.binarySearch(seen, 0, size, counter) - 1;
         if (size == seen.length) {
             if (at == 0) {
                 floor = counter;   // older than everything kept: remembering it would forget a newer one

@@ -69,4 +69,33 @@ class ReplayWindowTest {
         assertTrue(w.isFresh(15));
         assertFalse(w.isFresh(10));
     }
+
+    /**
+     * Mostly rising counters with some reordered, repeated or old ones: the window answers as a plain
+     * model does (the newest 64 accepted kept in a sorted set, a floor at the newest forgotten).
+     */
+    @Test
+    void answersAsASortedSetOfTheNewestWithAFloor() {
+        ReplayWindow w = new ReplayWindow(64);
+        java.util.TreeSet<Long> kept = new java.util.TreeSet<>();
+        long floor = Long.MIN_VALUE;
+        java.util.SplittableRandom random = new java.util.SplittableRandom(3);
+        long next = 1_000;
+        for (int i = 0; i < 20_000; i++) {
+            long c = random.nextInt(4) == 0 ? next - random.nextInt(100) : (next += 1 + random.nextInt(3));
+            boolean fresh = c > floor && !kept.contains(c);
+            org.junit.jupiter.api.Assertions.assertEquals(fresh, w.isFresh(c), "counter " + c + " at step " + i);
+            if (fresh) {
+                w.mark(c, 0);
+                if (kept.size() == 64 && c < kept.first()) {
+                    floor = c;
+                } else {
+                    kept.add(c);
+                    if (kept.size() > 64) {
+                        floor = kept.pollFirst();
+                    }
+                }
+            }
+        }
+    }
 }
