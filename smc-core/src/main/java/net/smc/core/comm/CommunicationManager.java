@@ -70,6 +70,15 @@ public final class CommunicationManager {
     private final IdSource ids;
     private final MessageSender sender;
     private final Map<String, Address> addresses = new HashMap<>();
+    /**
+     * Recent (sender, address) pairs already in {@link #addresses}, one place per sender by the hash
+     * of its name: a datagram from the same sender object at the same address object needs no write
+     * to the map. A pair is held only while the map gives that sender that address: only
+     * {@link #learn} replaces a sender's address, and it replaces the sender's place here too.
+     */
+    private final String[] learnedSenders = new String[LEARNED_PLACES];
+    private final Address[] learnedAddresses = new Address[LEARNED_PLACES];
+    private static final int LEARNED_PLACES = 16;
     private boolean started;
     private boolean stopped;
 
@@ -230,7 +239,7 @@ public final class CommunicationManager {
                     envelope.type(), from, envelope.sender(), proven);
             return;
         }
-        addresses.put(envelope.sender(), from);
+        learn(envelope.sender(), from);
         Message body = envelope.body();
         if (body instanceof Ack ack) {
             counters.acksReceived++;
@@ -250,6 +259,17 @@ public final class CommunicationManager {
             dispatch(envelope);
         }
         sender.acknowledge(from, envelope);
+    }
+
+    /** Records that {@code sender} sent from {@code from}: the address replies go to. */
+    private void learn(String sender, Address from) {
+        int place = sender.hashCode() & LEARNED_PLACES - 1;
+        if (learnedSenders[place] == sender && learnedAddresses[place] == from) {
+            return;   // the map holds this pair already
+        }
+        addresses.put(sender, from);
+        learnedSenders[place] = sender;
+        learnedAddresses[place] = from;
     }
 
     private void dispatch(Envelope envelope) {

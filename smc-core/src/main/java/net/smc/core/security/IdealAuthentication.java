@@ -246,6 +246,9 @@ public final class IdealAuthentication {
         private final Peer self;
         private AuthenticatedReceiver receiver;
         private Predicate<byte[]> unverifiedFilter = payload -> false;
+        /** The address this endpoint last sent a unicast to, and its record (a record is never replaced). */
+        private Address lastTo;
+        private Peer lastToPeer;
 
         private Endpoint(Transport inner, CredentialStatus status, Peer self) {
             super(inner);
@@ -263,7 +266,11 @@ public final class IdealAuthentication {
 
         @Override
         public void send(Address to, byte[] data) {
-            Peer peer = peers.get(to);
+            Peer peer = to == lastTo ? lastToPeer : peers.get(to);
+            if (peer != null) {
+                lastTo = to;
+                lastToPeer = peer;
+            }
             inner.send(to, seal(self, localAddress(), to, peer == null ? 0 : peer.incarnation, data));
         }
 

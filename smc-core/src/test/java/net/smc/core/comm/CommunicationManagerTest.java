@@ -273,4 +273,27 @@ class CommunicationManagerTest {
         assertEquals("communication manager of 'uav-2' needs a random source (random(...)) and a message router"
                 + " (router(...))", e.getMessage());
     }
+
+    /**
+     * The address a vehicle is answered at is the one it last sent from: it moves when the vehicle
+     * sends from another address and back again, whether or not the name is the same string object,
+     * and a taught address never replaces one heard.
+     */
+    @Test
+    void theAddressOfAVehicle_followsWhereItLastSentFrom() {
+        Transport other = network.attach(Address.loopback(4010));
+        Transport[] order = {raw, raw, other, other, raw, other, raw};
+        long id = 1;
+        for (Transport t : order) {
+            for (byte[] d : new MessageEncoder().datagrams(new Envelope(new String("uav-7"), id++, new Heartbeat("scout", 1, 0)))) {
+                t.send(cell.localAddress(), d);
+            }
+            sim.runFor(10);
+            assertEquals(t.localAddress(), cell.addressOf("uav-7").orElseThrow());
+            cell.learnAddress("uav-7", Address.loopback(4999));
+            assertEquals(t.localAddress(), cell.addressOf("uav-7").orElseThrow());
+        }
+        cell.learnAddress("uav-8", Address.loopback(4999));
+        assertEquals(Address.loopback(4999), cell.addressOf("uav-8").orElseThrow());
+    }
 }
