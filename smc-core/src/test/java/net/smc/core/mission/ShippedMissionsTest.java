@@ -80,6 +80,20 @@ class ShippedMissionsTest {
         assertTrue(surveyor.interfaces().subscribes().contains("mapUpdate"), surveyor.interfaces()::toString);
     }
 
+    /**
+     * A surveyor tells of a failed teammate's body (failedBody) to the robots that drive through the
+     * house: the other surveyors and the detectors subscribe to it.
+     */
+    @Test
+    void reconnaissance_surveyorsTellSurveyorsAndDetectorsOfFailedBodies() throws Exception {
+        Mission mission = load("reconnaissance.instance.xml");
+
+        RoleInterface surveyor = mission.role("surveyor").orElseThrow().interfaces();
+        RoleInterface detector = mission.role("hdetector").orElseThrow().interfaces();
+        assertTrue(surveyor.publishes().contains("failedBody") && surveyor.subscribes().contains("failedBody"), surveyor::toString);
+        assertTrue(detector.subscribes().contains("failedBody"), detector::toString);
+    }
+
     @Test
     void reconnaissance_rolesCarryRequirementsAndPolicies() throws Exception {
         Mission mission = load("reconnaissance.instance.xml");
