@@ -66,6 +66,34 @@ class ShippedMissionsTest {
         assertFalse(mission.allowsOnOneVehicle(List.of("relay", "hdetector")), "secondary roles need their primary");
     }
 
+    /**
+     * Events reach a vehicle only when one of its roles subscribes to them: the surveyors subscribe
+     * to the maps they publish, so each fills its map from the others' whether or not it also holds
+     * a detector's seat (which subscribes to them too), and does not map again what another mapped.
+     */
+    @Test
+    void reconnaissance_surveyorsHearEachOthersMaps() throws Exception {
+        Mission mission = load("reconnaissance.instance.xml");
+
+        MissionRole surveyor = mission.role("surveyor").orElseThrow();
+        assertTrue(surveyor.interfaces().publishes().contains("mapUpdate"), surveyor.interfaces()::toString);
+        assertTrue(surveyor.interfaces().subscribes().contains("mapUpdate"), surveyor.interfaces()::toString);
+    }
+
+    /**
+     * A surveyor tells of a failed teammate's body (failedBody) to the robots that drive through the
+     * house: the other surveyors and the detectors subscribe to it.
+     */
+    @Test
+    void reconnaissance_surveyorsTellSurveyorsAndDetectorsOfFailedBodies() throws Exception {
+        Mission mission = load("reconnaissance.instance.xml");
+
+        RoleInterface surveyor = mission.role("surveyor").orElseThrow().interfaces();
+        RoleInterface detector = mission.role("hdetector").orElseThrow().interfaces();
+        assertTrue(surveyor.publishes().contains("failedBody") && surveyor.subscribes().contains("failedBody"), surveyor::toString);
+        assertTrue(detector.subscribes().contains("failedBody"), detector::toString);
+    }
+
     @Test
     void reconnaissance_rolesCarryRequirementsAndPolicies() throws Exception {
         Mission mission = load("reconnaissance.instance.xml");

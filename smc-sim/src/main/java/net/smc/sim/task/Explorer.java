@@ -139,10 +139,16 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     public void pushAside(double x, double y) {
         StateValues.finite("Explorer pushAside x", x);
         StateValues.finite("Explorer pushAside y", y);
-        Point body = new Point(x, y);
-        bodies.add(body);
+        if (!bodies.add(new Point(x, y))) {
+            return;   // told again (a surveyor announces the bodies it knows of every few seconds)
+        }
         // what the body hid from the ring is not hidden for good: it may be pushed away
         hidden.removeIf(cell -> bodies.behind(map, cell % map.cols(), cell / map.cols()));
+    }
+
+    /** The failed teammates' bodies it was told of ({@link #pushAside}). */
+    List<Point> bodies() {
+        return bodies.points();
     }
 
     /** The zones it keeps out of. */

@@ -7,7 +7,8 @@ import net.smc.sim.map.OccupancyGrid;
 import net.smc.sim.map.Point;
 
 /**
- * Where failed teammates' bodies lie, as an {@link Explorer} was told ({@link Explorer#pushAside}).
+ * Where failed teammates' bodies lie, as an {@link Explorer} or a {@link Navigator} was told
+ * ({@code pushAside:y:}).
  * A dead robot's body can be pushed, so its cells may be planned through, and the unknown cells just
  * beyond it may lie behind the body rather than behind a wall.
  */
@@ -19,8 +20,17 @@ final class FailedBodies {
 
     private final List<Point> bodies = new ArrayList<>();
 
-    void add(Point body) {
-        bodies.add(body);
+    /** How close a body told of again must lie to one already known to be taken for it, m. */
+    static final double SAME_BODY = 0.05;
+
+    /** Adds a body unless one is known within {@link #SAME_BODY} of it (told again); whether it was new. */
+    boolean add(Point body) {
+        for (Point b : bodies) {
+            if (b.distanceTo(body.x(), body.y()) <= SAME_BODY) {
+                return false;
+            }
+        }
+        return bodies.add(body);
     }
 
     boolean isEmpty() {

@@ -23,7 +23,8 @@ import net.smc.sim.map.Point;
  * from it) without the sensor reading the threshold, or after {@link #ATTEMPTS} tries: a try that
  * finds no way there is repeated after {@link #RETRY_AFTER} seconds (the map grows meanwhile), from
  * the next side. Only the threshold keeps it out of the hazard it looks for: a threshold so high that it is read
- * only inside the hazard's radius of effect takes the robot in.
+ * only inside the hazard's radius of effect takes the robot in. Told where a failed teammate's body
+ * lies ({@link #pushAside}), its Navigator goes around the body or pushes it aside.
  */
 public final class HazardDetector extends RobotTask implements HazardDetectorI, Handover {
     /** How close two points are to count as one suspect, metres. */
@@ -103,6 +104,20 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         Map<String, Object> state = map.toState();
         state.put("cells", cells.items());
         map.fillUnknown(OccupancyGrid.fromState(state));
+    }
+
+    @Override
+    public void pushAside(double x, double y) {
+        StateValues.finite("HazardDetector pushAside x", x);
+        StateValues.finite("HazardDetector pushAside y", y);
+        if (navigator != null) {   // one without a map does not drive, so no body is in its way
+            navigator.pushAside(x, y);
+        }
+    }
+
+    /** The failed teammates' bodies it was told of (for tests). */
+    List<Point> bodies() {
+        return navigator == null ? List.of() : navigator.bodies();
     }
 
     @Override

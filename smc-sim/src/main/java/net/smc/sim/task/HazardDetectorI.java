@@ -32,6 +32,15 @@ public interface HazardDetectorI {
     @Op("merge:")
     void merge(ArrayValue cells);
 
+    /**
+     * A failed teammate's body lies at (x, y) (its last reported position): on its way to a point
+     * to inspect the robot goes around the body when there is room, else it plans through the
+     * body's cells and pushes it aside (a dead robot in a doorway would otherwise keep it out of
+     * the room beyond). A detector without a map does not drive and ignores it.
+     */
+    @Op("pushAside:y:")
+    void pushAside(double x, double y);
+
     /** Whether it is inspecting or has points queued. */
     @Op("isInspecting")
     boolean isInspecting();

@@ -19,7 +19,10 @@ import net.smc.sim.map.Zone;
  * cells the ring has struck leaves too little room at the full clearance. While it drives it keeps
  * mapping from the infrared ring, re-plans every second and whenever something is in the way (after
  * backing off a little), and gives up with {@code blocked} when no path is left or it has made no
- * progress for {@link #PATIENCE} seconds.
+ * progress for {@link #PATIENCE} seconds. Told where a failed teammate's body lies
+ * ({@link #pushAside}), it goes around the body when there is room and otherwise plans through the
+ * body's cells ({@link FailedBodies#without}) and pushes it aside: its path follower drives on
+ * slowly into what is in front of it near the body instead of stopping.
  */
 public final class Navigator extends RobotTask implements NavigatorI, Handover {
     /** Seconds without getting 0.1 m closer before giving up. */
@@ -32,6 +35,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
     private final PathPlanner narrow;
     private final PathFollower follower;
     private final List<Zone> zones = new ArrayList<>();
+    private final FailedBodies bodies = new FailedBodies();
     private double margin = 0.5;
     private Point goal;
     private boolean replan;
@@ -76,6 +80,21 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
     public void avoid(double x, double y, double radius) {
         zones.add(new Zone(x, y, radius));
         replan = true;
+    }
+
+    @Override
+    public void pushAside(double x, double y) {
+        StateValues.finite("Navigator pushAside x", x);
+        StateValues.finite("Navigator pushAside y", y);
+        if (bodies.add(new Point(x, y))) {
+            follower.pushable(bodies.points());
+            replan = true;
+        }
+    }
+
+    /** The failed teammates' bodies it was told of ({@link #pushAside}). */
+    List<Point> bodies() {
+        return bodies.points();
     }
 
     @Override
@@ -156,9 +175,9 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
             replan = false;
             nextReplan = time + REPLAN_PERIOD;
             Point from = new Point(pose.x(), pose.y());
-            Optional<List<Point>> path = planner.plan(map, from, goal, zones, margin);
-            if (path.isEmpty()) {
-                path = narrow.plan(map, from, goal, zones, margin);
+            Optional<List<Point>> path = plan(map, from);
+            if (path.isEmpty() && !bodies.isEmpty()) {
+                path = plan(bodies.without(map), from);
             }
             if (path.isEmpty()) {
                 giveUp();
@@ -178,6 +197,12 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
             }
             default -> { }
         }
+    }
+
+    /** A path to the goal on {@code grid} at the full clearance, else at the narrow one. */
+    private Optional<List<Point>> plan(OccupancyGrid grid, Point from) {
+        Optional<List<Point>> path = planner.plan(grid, from, goal, zones, margin);
+        return path.isPresent() ? path : narrow.plan(grid, from, goal, zones, margin);
     }
 
     private void giveUp() {

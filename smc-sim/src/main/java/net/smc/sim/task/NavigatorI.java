@@ -25,6 +25,14 @@ public interface NavigatorI {
     @Op("margin:")
     void margin(double metres);
 
+    /**
+     * A failed teammate's body lies at (x, y) (its last reported position): when no path goes
+     * around it, the robot plans through the body's cells and drives slowly into it to push it
+     * aside (a dead robot in a doorway would otherwise seal the rooms behind it).
+     */
+    @Op("pushAside:y:")
+    void pushAside(double x, double y);
+
     /** Gives up the current goal and stops. */
     @Op("halt")
     void halt();

@@ -40,7 +40,8 @@ class TaskCatalogTest {
                 new OperationDescription("goTo", List.of("double", "double")),
                 new OperationDescription("halt", List.of()),
                 new OperationDescription("isMoving", List.of()),
-                new OperationDescription("margin", List.of("double"))), d.operations());
+                new OperationDescription("margin", List.of("double")),
+                new OperationDescription("pushAside", List.of("double", "double"))), d.operations());
         assertEquals(List.of(
                 new EventDescription("arrived", List.of(new Attribute("x", "double"), new Attribute("y", "double"))),
                 new EventDescription("blocked", List.of(new Attribute("x", "double"), new Attribute("y", "double")))),
@@ -69,6 +70,8 @@ class TaskCatalogTest {
                 catalog.describe("HazardDetector").events());
         assertTrue(catalog.describe("HazardDetector").operations()
                 .contains(new OperationDescription("inspect", List.of("double", "double"))));
+        assertTrue(catalog.describe("HazardDetector").operations()
+                .contains(new OperationDescription("pushAside", List.of("double", "double"))));
         assertEquals(List.of("hazardAdded"), eventNames("Aggregator"));
         assertTrue(catalog.describe("Aggregator").operations()
                 .contains(new OperationDescription("report", List.of("String", "double", "double"))));
