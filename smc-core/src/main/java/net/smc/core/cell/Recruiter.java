@@ -64,11 +64,14 @@ final class Recruiter {
     private final PolicyServer policies;
     /** How many vehicles are asked for their full descriptions at a time. */
     private final CapabilityAsks asks;
+    /** The discovery replies decided on together: a burst, those that came while the role was loading. */
+    private final ReplyBatches batches;
 
     Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
         this.rediscover = rediscover;
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
+        this.batches = new ReplyBatches(ctx, st, this::decide);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -92,25 +95,17 @@ final class Recruiter {
             st.earlyReplies.add(env.sender());
             return;
         }
-        decide(env.sender(), r.summary(), now);
+        batches.add(env.sender());
     }
 
-    /**
-     * The role this cell was taking has started: its policies decide on the vehicles that answered
-     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply; on
-     * those that answered within a heartbeat period, as an older answer may no longer hold (the
-     * vehicle has taken a role since), and a fresh discovery costs less than an assignment refused.
-     */
+    /** The role this cell was taking has started: its policies decide on the vehicles that answered meanwhile. */
     void takeUpEarlyReplies() {
-        List<String> early = List.copyOf(st.earlyReplies);
-        st.earlyReplies.clear();
-        long now = ctx.clock().nowMillis();
-        for (String vehicle : early) {
-            Heard heard = st.heard.get(vehicle);
-            if (heard != null && !st.owned.isEmpty() && now - heard.atMillis() <= ctx.timing().comTimeoutMillis()) {
-                decide(vehicle, heard.summary(), now);
-            }
-        }
+        batches.takeUpEarly();
+    }
+
+    /** The cell stops: replies not yet decided on are dropped. */
+    void stop() {
+        batches.stop();
     }
 
     /** Table I and Algorithm 2 on a free vehicle that answered discovery with {@code summary}. */
@@ -210,34 +205,8 @@ final class Recruiter {
      */
     private void lookAgain() {
         askDeferred();
-        decideOnHeard();
+        batches.decideOnHeard();
         rediscover.run();   // does nothing while requests are out or no seat is open: their ends look again
-    }
-
-    /**
-     * Puts the vehicles that answered this cell's discovery within the first retransmission
-     * timeout of the critical messages, and are neither its children nor being given a seat, to the
-     * policies again, in the order they answered, while a seat is open: managers of the same role
-     * hear the same free vehicles and often pick the same one first, and the one that lost it need
-     * not discover again (a round trip) to find the others that answered it. A vehicle that turns
-     * out taken refuses, and is forgotten (assignmentFailed).
-     */
-    private void decideOnHeard() {
-        long now = ctx.clock().nowMillis();
-        long window = ctx.timing().senderSettings().initialTimeoutMillis();
-        List<Map.Entry<String, Heard>> recent = st.heard.entrySet().stream()
-                .filter(e -> now - e.getValue().atMillis() <= window)
-                .sorted(Map.Entry.comparingByValue(java.util.Comparator.comparingLong(Heard::atMillis)))
-                .toList();
-        for (Map.Entry<String, Heard> e : recent) {
-            if (!st.hasVacancy()) {
-                return;
-            }
-            String vehicle = e.getKey();
-            if (st.owned.values().stream().noneMatch(o -> vehicle.equals(o.pendingFor))) {
-                decide(vehicle, e.getValue().summary(), now);
-            }
-        }
     }
 
     private void askDeferred() {

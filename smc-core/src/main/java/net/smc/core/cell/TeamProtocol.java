@@ -295,6 +295,7 @@ final class TeamProtocol implements DiscoveryActions {
             tickTimer.cancel();
         }
         supervisor.stop();
+        recruiter.stop();
     }
 
     /** Leaves the team gracefully: tells parent and children, gives up every role, answers no discovery. */
