@@ -2,8 +2,9 @@ package net.smc.core.cell;
 
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
+import java.util.function.Predicate;
+import java.util.stream.Stream;
 
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Heard;
@@ -26,15 +27,18 @@ final class ReplyBatches {
     private final TeamContext ctx;
     private final TeamState st;
     private final Decision decision;
+    /** Checks a vehicle's reply held unchecked, if one is; whether its reply is checked and heard (Recruiter.check). */
+    private final Predicate<String> check;
     /** The vehicles whose replies came in the burst being taken up; decided on after it. */
     private final Set<String> burst = new LinkedHashSet<>();
     /** The task that decides on {@link #burst}, or null when none is due. */
     private Cancellable burstDue;
 
-    ReplyBatches(TeamContext ctx, TeamState st, Decision decision) {
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Predicate<String> check) {
         this.ctx = ctx;
         this.st = st;
         this.decision = decision;
+        this.check = check;
     }
 
     /**
@@ -63,8 +67,8 @@ final class ReplyBatches {
      */
     void takeUpEarly() {
         long now = ctx.clock().nowMillis();
-        List<String> early = st.earlyReplies.stream().filter(v -> st.heard.containsKey(v)
-                && now - st.heard.get(v).atMillis() <= ctx.timing().comTimeoutMillis()).toList();
+        List<String> early = st.earlyReplies.stream()
+                .filter(v -> now - answeredMillis(v, now) <= ctx.timing().comTimeoutMillis()).toList();
         st.earlyReplies.clear();
         decideOn(early, now);
     }
@@ -80,16 +84,32 @@ final class ReplyBatches {
     void decideOnHeard() {
         long now = ctx.clock().nowMillis();
         long window = ctx.timing().senderSettings().initialTimeoutMillis();
-        List<String> recent = st.heard.entrySet().stream().filter(e -> now - e.getValue().atMillis() <= window)
-                .map(Map.Entry::getKey)
+        List<String> recent = Stream.concat(st.heard.keySet().stream(), st.unchecked.keySet().stream()).distinct()
+                .filter(v -> now - answeredMillis(v, now) <= window)
                 .filter(v -> st.owned.values().stream().noneMatch(o -> v.equals(o.pendingFor))).toList();
         decideOn(recent, now);
     }
 
+    /** When {@code vehicle} last answered (its reply held unchecked, or checked); long ago when it did not. */
+    private long answeredMillis(String vehicle, long now) {
+        TeamState.Unchecked u = st.unchecked.get(vehicle);
+        Heard h = st.heard.get(vehicle);
+        long at = Math.max(u == null ? Long.MIN_VALUE : u.atMillis(), h == null ? Long.MIN_VALUE : h.atMillis());
+        return at == Long.MIN_VALUE ? now - Long.MAX_VALUE / 2 : at;
+    }
+
+    /**
+     * Decides on {@code vehicles} in this manager's order while a seat is open; a vehicle whose reply
+     * is held unchecked is checked first, and skipped if it fails: so only as many replies are
+     * checked (and as many first contacts made) as it takes to fill the open seats.
+     */
     private void decideOn(List<String> vehicles, long now) {
         for (String vehicle : siblingOrder(vehicles)) {
             if (!st.hasVacancy()) {
                 return;
+            }
+            if (!check.test(vehicle)) {
+                continue;
             }
             Heard heard = st.heard.get(vehicle);
             if (heard != null) {
