@@ -3,6 +3,7 @@ package net.smc.core.security;
 import java.util.Optional;
 import java.util.function.Predicate;
 
+import net.smc.core.transport.Address;
 import net.smc.core.transport.Transport;
 
 /**
@@ -37,4 +38,32 @@ public interface AuthenticatingTransport extends Transport {
      * offered to it. None by default: every payload is checked.
      */
     void setUnverifiedFilter(Predicate<byte[]> ignorable);
+
+    /**
+     * Holds the signed datagrams whose payload {@code readable} accepts, unchecked, and hands their
+     * payloads to {@code receiver} to read first: a manager that hears a hundred vehicles answer its
+     * discovery and seats ten reads the answers to choose whom to contact, and pays the credential
+     * check and the key agreement of a first contact only for those ({@link #checkHeld}). Nothing a
+     * held payload says is proven (not its sender either): a forged one can only make the receiver
+     * check it, which it fails. The newest datagram per source address is held, a bounded number in
+     * all (the oldest goes first). Payloads under a session or the team key are checked by a MAC and
+     * delivered as usual. None by default: every payload is checked as it comes.
+     */
+    void holdUnverified(Predicate<byte[]> readable, UnverifiedReceiver receiver);
+
+    /**
+     * Checks the datagram held from {@code from} now, as if it had just arrived: when it passes every
+     * check its payload goes to the authenticated receiver (on this thread, before this returns).
+     *
+     * @return whether a datagram was held from {@code from} (it is no longer held, passed or not)
+     */
+    boolean checkHeld(Address from);
+
+    /**
+     * Sends {@code data} to {@code to} as {@link #send} does, but starts no session: signed when there
+     * is none. For a message its receiver may read before checking it and answer by contacting the
+     * sender (a discovery reply): a vehicle that answers many managers then shakes hands only with
+     * those that contact it.
+     */
+    void sendWithoutHandshake(Address to, byte[] data);
 }
