@@ -2,6 +2,7 @@ package net.smc.core.cell;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -180,7 +181,7 @@ final class Reports {
             v.add("#state");
             v.add(state);
         }
-        return java.util.Collections.unmodifiableList(v);
+        return Collections.unmodifiableList(v);
     }
 
     /** Sets the state this vehicle reports to its parent (its position, say), handed over if it fails. */
