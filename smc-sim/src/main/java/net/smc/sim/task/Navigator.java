@@ -162,7 +162,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
 
     @Override
     protected void step(double time, double dt) {
-        RangeMapper.observe(hardware, map);
+        RangeMapper.observeKeepingWalls(hardware, map);
         if (goal == null) {
             return;
         }
