@@ -17,7 +17,9 @@ import net.smc.sim.map.Zone;
  * zones plus the margin, and follows the path. When no path keeps its clearance it takes one that
  * keeps only the body's half-width and 5 cm (as the {@link Explorer} does): a doorway whose jamb
  * cells the ring has struck leaves too little room at the full clearance. While it drives it keeps
- * mapping from the infrared ring and looks at its path every second: it keeps a path planned at the
+ * mapping from the infrared ring ({@link RangeMapper#observeKeepingWalls}: no ray frees a cell
+ * near a point the ring hits, so a wall on a grid line is not worn into gaps the planner takes for
+ * ways through it) and looks at its path every second: it keeps a path planned at the
  * full clearance while every cell along it is still open, and plans again when one is closed, when
  * something is in the way (after backing off a little), or when it follows a narrow path (a path
  * at the full clearance may have opened since). Re-planning every second whatever the path, it

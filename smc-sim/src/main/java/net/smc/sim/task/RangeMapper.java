@@ -85,6 +85,8 @@ final class RangeMapper {
      * those cells short of its own hit's shadow; as the robot moved, such rays freed the cells the
      * ring had marked a moment before, and the map showed gaps in the wall that a planner took for
      * ways through it. A neighbouring beam hits the wall nearer, and its shadow now covers them.
+     * Not covered: a ray that reaches its full range without a hit and ends beside the wall, with
+     * no hit near it (a robot half a metre or more from the wall still frees some of those cells).
      * The Explorer keeps {@link #observe}: its map is the one that counts the floor mapped, and
      * floor beside a wall is mostly marked by those rays.
      */
