@@ -220,6 +220,29 @@ public final class PathPlanner {
     }
 
     /**
+     * Whether a path from {@code start} through {@code waypoints} still crosses only open cells
+     * (at this planner's clearance, keeping out of the zones plus the margin): each leg is looked
+     * at every quarter cell. A robot standing in a closed cell has no open path to keep.
+     */
+    public boolean isOpen(OccupancyGrid grid, Point start, List<Point> waypoints, List<Zone> avoid, double margin) {
+        boolean[] closed = closedCells(grid, avoid, margin);
+        Point from = start;
+        for (Point to : waypoints) {
+            int steps = Math.max(1, (int) Math.ceil(from.distanceTo(to.x(), to.y()) / (grid.resolution() / 4)));
+            for (int i = 0; i <= steps; i++) {
+                double t = (double) i / steps;
+                int c = grid.col(from.x() + (to.x() - from.x()) * t);
+                int r = grid.row(from.y() + (to.y() - from.y()) * t);
+                if (!grid.inside(c, r) || closed[c + r * grid.cols()]) {
+                    return false;
+                }
+            }
+            from = to;
+        }
+        return true;
+    }
+
+    /**
      * The open cells of a search by estimated cost, cheapest first: a binary heap on two arrays
      * (no object per entry). Equal estimates leave in the order {@link java.util.PriorityQueue}
      * would give them (the same sifts, the same comparisons), so a search expands the cells it

@@ -39,6 +39,12 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
     static final int ATTEMPTS = 8;
     /** Seconds after a blocked try before the suspect is tried again. */
     static final double RETRY_AFTER = 3;
+    /**
+     * How near the robot a suspect must lie for a hazard the sensor reads at the threshold to be
+     * taken for that suspect's, metres: the threshold is read about a metre out, and the camera's
+     * estimate of where a hazard lies is off by some tenths.
+     */
+    static final double REACH = 2.5;
     /** How close to the approach point the robot must stand to count as having looked from there, metres. */
     private static final double THERE = 0.35;
 
@@ -61,7 +67,8 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
     private double threshold = 0.5;
     private Suspect inspecting;
     private Point approach;
-    private int foundBefore;
+    /** Whether a hazard sensed since the inspection began was taken to be the one inspected. */
+    private boolean targetSensed;
 
     public HazardDetector(TaskContext context) {
         this(context.hardware(), context.map());
@@ -104,6 +111,11 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
         Map<String, Object> state = map.toState();
         state.put("cells", cells.items());
         map.fillUnknown(OccupancyGrid.fromState(state));
+    }
+
+    /** The navigator it drives with, or null when it has no map (for tests: the zones it keeps out of). */
+    Navigator navigator() {
+        return navigator;
     }
 
     @Override
@@ -178,7 +190,7 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
                 sensed = true;
                 if (!found.containsKey(r.tag())) {
                     found.put(r.tag(), List.of(r.tag(), r.kind(), pose.x(), pose.y()));
-                    keepAway(pose);
+                    attribute(pose);
                     hazardDetected("hazardDetected", hardware.id(), r.kind(), pose.x(), pose.y());
                 }
             }
@@ -211,12 +223,12 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
                 next = new Suspect(next.at(), Math.atan2(pose.y() - next.at().y(), pose.x() - next.at().x()), 0, 0, time);
             }
             inspecting = next;
-            foundBefore = found.size();
+            targetSensed = false;
             approach = next.tries() == 0 && next.at().distanceTo(pose.x(), pose.y()) <= APPROACH
                     ? new Point(pose.x(), pose.y()) : next.approach();
             navigator.goTo(approach.x(), approach.y());
         }
-        if (found.size() > foundBefore || sensed && inspecting.at().distanceTo(pose.x(), pose.y()) < 2.5) {
+        if (targetSensed || sensed && inspecting.at().distanceTo(pose.x(), pose.y()) < REACH) {
             finish(true);
             return;
         }
@@ -237,14 +249,47 @@ public final class HazardDetector extends RobotTask implements HazardDetectorI, 
     }
 
     /**
-     * After confirming a hazard while inspecting a point: keep out of a circle about that point
-     * from now on, as large as leaves the robot, where it stands, outside it and the margin.
+     * Which suspect a hazard first sensed where the robot stands is: the one, of the point being
+     * inspected and those queued, nearest the robot and within {@link #REACH} of it. The sensor
+     * gives no bearing, so a hazard sensed on the way to a point farther off is not that point's
+     * hazard: before, any new hazard ended the inspection under way as confirmed and closed a
+     * zone round the point inspected, so a detector that passed one suspect on its way to another
+     * took the other for confirmed and could never reach it again. A queued suspect so sensed is
+     * done with (it is not inspected again); a hazard no suspect explains is reported only.
      */
-    private void keepAway(Pose pose) {
-        if (navigator == null || inspecting == null) {
+    private void attribute(Pose pose) {
+        if (navigator == null) {
             return;
         }
-        Point p = inspecting.at();
+        Suspect nearest = null;
+        double best = REACH;
+        List<Suspect> candidates = new ArrayList<>(queue);
+        if (inspecting != null) {
+            candidates.add(0, inspecting);
+        }
+        for (Suspect s : candidates) {
+            double d = s.at().distanceTo(pose.x(), pose.y());
+            if (d < best) {
+                best = d;
+                nearest = s;
+            }
+        }
+        if (nearest == null) {
+            return;
+        }
+        keepAway(pose, nearest.at());
+        if (nearest == inspecting) {
+            targetSensed = true;
+        } else {
+            queue.remove(nearest);
+        }
+    }
+
+    /**
+     * After confirming the hazard of a suspected point: keep out of a circle about that point from
+     * now on, as large as leaves the robot, where it stands, outside it and the margin.
+     */
+    private void keepAway(Pose pose, Point p) {
         double d = p.distanceTo(pose.x(), pose.y());
         double radius = d - navigator.margin() - 0.25;
         if (radius > 0.1) {

@@ -17,12 +17,21 @@ import net.smc.sim.map.Zone;
  * zones plus the margin, and follows the path. When no path keeps its clearance it takes one that
  * keeps only the body's half-width and 5 cm (as the {@link Explorer} does): a doorway whose jamb
  * cells the ring has struck leaves too little room at the full clearance. While it drives it keeps
- * mapping from the infrared ring, re-plans every second and whenever something is in the way (after
- * backing off a little), and gives up with {@code blocked} when no path is left or it has made no
- * progress for {@link #PATIENCE} seconds. Told where a failed teammate's body lies
- * ({@link #pushAside}), it goes around the body when there is room and otherwise plans through the
- * body's cells ({@link FailedBodies#without}) and pushes it aside: its path follower drives on
- * slowly into what is in front of it near the body instead of stopping.
+ * mapping from the infrared ring ({@link RangeMapper#observeKeepingWalls}: no ray frees a cell
+ * near a point the ring hits, so a wall on a grid line is not worn into gaps the planner takes for
+ * ways through it) and looks at its path every second: it keeps a path planned at the
+ * full clearance while every cell along it is still open, and plans again when one is closed, when
+ * something is in the way (after backing off a little), or when it follows a narrow path (a path
+ * at the full clearance may have opened since). Re-planning every second whatever the path, it
+ * turned back and forth between two ways of about the same cost as the map changed under it: a
+ * wall on the line between two grid columns, whose cells the ring marks occupied near it and
+ * rays ending short of it free again from farther off, looked open every other second, and a
+ * detector drove to and fro between a doorway and that wall for minutes. It gives up with
+ * {@code blocked} when no path is left or it has made no progress for {@link #PATIENCE} seconds.
+ * Told where a failed teammate's body lies ({@link #pushAside}), it goes around the body when
+ * there is room and otherwise plans through the body's cells ({@link FailedBodies#without}) and
+ * pushes it aside: its path follower drives on slowly into what is in front of it near the body
+ * instead of stopping. A path through a body counts as narrow, so it is planned again every second.
  */
 public final class Navigator extends RobotTask implements NavigatorI, Handover {
     /** Seconds without getting 0.1 m closer before giving up. */
@@ -43,6 +52,8 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
     private double backOffUntil = -1;
     private double best;
     private double bestAt;
+    /** Whether the path followed was planned at the narrow clearance (none kept the full one). */
+    private boolean narrowPath;
 
     public Navigator(TaskContext context) {
         this(context.hardware(), context.map());
@@ -153,7 +164,7 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
 
     @Override
     protected void step(double time, double dt) {
-        RangeMapper.observe(hardware, map);
+        RangeMapper.observeKeepingWalls(hardware, map);
         if (goal == null) {
             return;
         }
@@ -172,18 +183,26 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
             return;
         }
         if (replan || time >= nextReplan || !follower.active()) {
+            boolean keep = !replan && follower.active() && !narrowPath
+                    && planner.isOpen(map, new Point(pose.x(), pose.y()), follower.remaining(), zones, margin);
             replan = false;
             nextReplan = time + REPLAN_PERIOD;
-            Point from = new Point(pose.x(), pose.y());
-            Optional<List<Point>> path = plan(map, from);
-            if (path.isEmpty() && !bodies.isEmpty()) {
-                path = plan(bodies.without(map), from);
+            if (!keep) {
+                Point from = new Point(pose.x(), pose.y());
+                Optional<List<Point>> path = planner.plan(map, from, goal, zones, margin);
+                narrowPath = path.isEmpty();
+                if (path.isEmpty()) {
+                    path = narrow.plan(map, from, goal, zones, margin);
+                }
+                if (path.isEmpty() && !bodies.isEmpty()) {
+                    path = plan(bodies.without(map), from);
+                }
+                if (path.isEmpty()) {
+                    giveUp();
+                    return;
+                }
+                follower.follow(path.get(), map.resolution() / 2);
             }
-            if (path.isEmpty()) {
-                giveUp();
-                return;
-            }
-            follower.follow(path.get(), map.resolution() / 2);
         }
         switch (follower.step()) {
             case ARRIVED -> {

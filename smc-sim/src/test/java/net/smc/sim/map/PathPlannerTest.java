@@ -80,6 +80,27 @@ class PathPlannerTest {
     }
 
     /** A robot beside another robot or a wall still leaves its closed band, by the shortest way. */
+    /** A planned path is open until a cell along it is closed (here by an obstacle marked beside it) or a zone covers it. */
+    @Test
+    void aPlannedPathIsOpen_untilSomethingBesideItClosesACellAlongIt() {
+        OccupancyGrid grid = new OccupancyGrid(0, 0, 5, 5, 0.25);
+        for (int r = 0; r < grid.rows(); r++) {
+            for (int c = 0; c < grid.cols(); c++) {
+                grid.markFree(grid.centre(c, r).x(), grid.centre(c, r).y());
+            }
+        }
+        PathPlanner planner = new PathPlanner(CLEARANCE);
+        Point start = new Point(0.6, 2.5);
+        List<Point> path = planner.plan(grid, start, new Point(4.4, 2.5), List.of(), 0).orElseThrow();
+        assertTrue(planner.isOpen(grid, start, path, List.of(), 0));
+        assertFalse(planner.isOpen(grid, start, path, List.of(new Zone(2.5, 2.5, 0.3)), 0), "a zone across it closes it");
+        grid.markOccupied(2.6, 2.85);   // beside the path, within the clearance of it
+        grid.markOccupied(2.6, 2.85);
+        assertFalse(planner.isOpen(grid, start, path, List.of(), 0), "an obstacle within the clearance of it closes it");
+        assertTrue(planner.isOpen(grid, start, List.of(new Point(0.6, 4.4), new Point(4.4, 4.4)), List.of(), 0),
+                "a path the obstacle is not near stays open");
+    }
+
     @Test
     void aRobotInAClosedBandLeavesItByTheShortestWay() {
         OccupancyGrid grid = new OccupancyGrid(0, 0, 4, 4, 0.25);

@@ -87,6 +87,42 @@ class InspectionTest {
         assertEquals(List.of("inspected|6.0|5.6|true"), log.lines.stream().filter(l -> l.startsWith("inspected|")).toList());
     }
 
+    /**
+     * The sensor gives no bearing: a hazard first sensed on the way to a suspect farther off is the
+     * nearby suspect's, not the one being inspected. The inspection under way goes on (and here
+     * finds nothing, since nothing is there), the detector keeps out of the hazard it sensed, and
+     * the nearby suspect is done with. Before, the inspection under way ended as confirmed and the
+     * zone kept round the confirmed hazard was drawn round the far point, which no later try could
+     * then reach.
+     */
+    @Test
+    void aHazardSensedOnTheWayToAnotherSuspect_isTheNearSuspects_andTheInspectionGoesOn() throws Exception {
+        Rig rig = detectorRig();
+        SimulationScheduler scheduler = rig.scheduler();
+        SimWorld world = rig.world();
+        SimRobot robot = rig.robot();
+        HazardDetector detector = rig.detector();
+        EventLog log = rig.log();
+        detector.inspect(10, 4);   // beyond the hazard (6, 4), on the robot's line
+        world.start();
+        scheduler.runFor(500);
+        detector.inspect(6, 4);    // queued while the far point is being inspected
+        double closest = Double.POSITIVE_INFINITY;
+        for (int s = 0; s < 3000 && detector.isInspecting(); s++) {
+            scheduler.runFor(100);
+            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
+        }
+        assertFalse(detector.isInspecting(), "the inspections ended");
+        assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
+        assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        assertEquals(1, detector.hazards().size(), "the hazard passed on the way was confirmed: " + log.lines);
+        assertTrue(robot.x() > 8, "the detector went on to the far point: at " + robot.x() + ", " + robot.y());
+        assertEquals(List.of("inspected|10.0|4.0|false"), log.lines.stream().filter(l -> l.startsWith("inspected|")).toList(),
+                "the far point was looked at from every side, and the near suspect not inspected again");
+        assertTrue(detector.navigator().zones().stream().allMatch(z -> Math.hypot(z.x() - 6, z.y() - 4) < 1e-9),
+                "the zone kept is round the hazard sensed, not the far point: " + detector.navigator().zones());
+    }
+
     @Test
     void aDetectorSentWhereNothingIs_looksFromEverySide_thenSaysNothingIsThere() throws Exception {
         Rig rig = detectorRig();

@@ -66,6 +66,50 @@ class NavigatorTest {
         log.assertNoErrors();
     }
 
+    /**
+     * A path at the full clearance is kept while it stays open: a cheaper way that opens on the
+     * map meanwhile (here a stretch of wall whose cells turn free, as rays ending short of a wall
+     * on a grid line free them from afar) does not turn the robot round. Re-planning every second
+     * whatever the path, it drove to that wall, and back when the ring marked it again.
+     */
+    @Test
+    void goTo_keepsAPathThatStaysOpen_whenAWayThroughAWallOpensOnTheMap() throws Exception {
+        FakeWorld world = new FakeWorld(10, 6).box(5, 0, 5.25, 4.5);   // a wall with a way round at its north end
+        FakeRobot robot = world.robot("r1", 2, 1, 0);
+        OccupancyGrid map = new OccupancyGrid(0, 0, 10, 6, 0.25);
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c < map.cols(); c++) {
+                var p = map.centre(c, r);
+                for (int i = 0; i < 3; i++) {
+                    if (world.solid(p.x(), p.y())) {
+                        map.markOccupied(p.x(), p.y());
+                    } else {
+                        map.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        Navigator nav = new Navigator(robot, map, Explorer.CLEARANCE);
+        EventLog log = new EventLog().watch(nav);
+        nav.start();
+        nav.goTo(8, 1);
+        world.run(2);
+        for (int r = map.row(0.5); r <= map.row(2); r++) {   // the wall's south stretch now looks free
+            for (int i = 0; i < 8; i++) {
+                map.markFree(5.125, map.centre(0, r).y());
+            }
+        }
+        assertTrue(new net.smc.sim.map.PathPlanner(Explorer.CLEARANCE).plan(map, new net.smc.sim.map.Point(robot.x, robot.y),
+                new net.smc.sim.map.Point(8, 1), List.of(), nav.margin()).orElseThrow().stream().allMatch(p -> p.y() < 3.5),
+                "a straight way through the wall is open on the map");
+        int from = robot.trail.size();
+        assertTrue(world.runUntil(() -> !nav.isMoving(), 200), "navigator still moving");
+        assertEquals(1, log.of("arrived").size(), "events: " + log.lines);
+        double closest = robot.trail.subList(from, robot.trail.size()).stream()
+                .mapToDouble(p -> Math.hypot(p.x() - 5.1, p.y() - 1.25)).min().orElseThrow();
+        assertTrue(closest > 1.5, "kept to its way round the wall: came within " + closest + " m of the stretch that looked free");
+    }
+
     @Test
     void goTo_neverEntersAnAvoidedZonePlusItsMargin() throws Exception {
         FakeWorld world = new FakeWorld(8, 6);
