@@ -215,11 +215,13 @@ public final class InMemoryNetwork {
 
     void send(SimTransport sender, Address to, byte[] data) {
         sender.counters.sent++;
+        observeSent(sender, to, data);
         route(sender, to, data, departureDelay(sender, to, data), false);
     }
 
     void broadcast(SimTransport sender, byte[] data) {
         sender.counters.sent++;
+        observeSent(sender, null, data);
         long delay = departureDelay(sender, null, data);
         if (broadcastOrder == null) {
             broadcastOrder = attached.keySet().toArray(new Address[0]);
@@ -228,6 +230,14 @@ public final class InMemoryNetwork {
         for (Address to : broadcastOrder) {   // route never attaches or detaches
             if (!to.equals(self)) {
                 route(sender, to, data, delay, true);
+            }
+        }
+    }
+
+    private void observeSent(SimTransport sender, Address to, byte[] data) {
+        if (!sender.isCrashed()) {
+            for (NetworkObserver o : observers) {
+                o.sent(scheduler.nowMillis(), sender.localAddress(), to, data);
             }
         }
     }
