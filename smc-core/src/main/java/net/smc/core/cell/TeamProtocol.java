@@ -218,8 +218,8 @@ final class TeamProtocol implements DiscoveryActions {
     }
 
     /**
-     * Whether this cell would do nothing, now, with the message in {@code datagram} (one datagram as
-     * the Communication-Manager decodes it) whoever really sent it: a discovery it would not answer
+     * Whether this cell would do nothing, now, with the message in {@code data[offset, offset + length)}
+     * (one datagram as the Communication-Manager decodes it, read in place) whoever really sent it: a discovery it would not answer
      * ({@link Assignee#ignores}: the vehicle has a parent, or could hold no role that manager
      * manages). In a large team every cell hears every manager's discovery and answers few of them;
      * checking the signature of each (an Ed25519 verification, and the sender's credential the first
@@ -231,11 +231,11 @@ final class TeamProtocol implements DiscoveryActions {
      * only by the same test {@link Assignee#onDiscovery} applies, and never a fragment or anything
      * that does not decode.
      */
-    boolean ignoresUnverified(byte[] datagram) {
-        if (datagram.length <= TYPE_AT || (datagram[TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
+    boolean ignoresUnverified(byte[] data, int offset, int length) {
+        if (length <= TYPE_AT || (data[offset + TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
             return false;
         }
-        return peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
+        return peek.decode(data, offset, length) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
                 && assignee.ignores(d.envelope().sender(), discovery);
     }
 

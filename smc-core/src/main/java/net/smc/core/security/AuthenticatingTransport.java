@@ -1,7 +1,6 @@
 package net.smc.core.security;
 
 import java.util.Optional;
-import java.util.function.Predicate;
 
 import net.smc.core.transport.Transport;
 
@@ -34,7 +33,7 @@ public interface AuthenticatingTransport extends Transport {
      * sender gains anything by it. The test must not answer {@code true} for a payload the receiver
      * acts on, and sees the payload's bytes only, not the checked sender. Payloads under a session or
      * the team key are checked by a MAC, which costs about as little as the test, and need not be
-     * offered to it. None by default: every payload is checked.
+     * offered to it. None by default ({@link UnverifiedFilter#NONE}): every payload is checked.
      */
-    void setUnverifiedFilter(Predicate<byte[]> ignorable);
+    void setUnverifiedFilter(UnverifiedFilter ignorable);
 }

@@ -12,7 +12,6 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.WeakHashMap;
-import java.util.function.Predicate;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
@@ -245,7 +244,7 @@ public final class IdealAuthentication {
         /** This address's record (its seal counter is shared with its later incarnations). */
         private final Peer self;
         private AuthenticatedReceiver receiver;
-        private Predicate<byte[]> unverifiedFilter = payload -> false;
+        private UnverifiedFilter unverifiedFilter = UnverifiedFilter.NONE;
         /** The address this endpoint last sent a unicast to, and its record (a record is never replaced). */
         private Address lastTo;
         private Peer lastToPeer;
@@ -309,14 +308,14 @@ public final class IdealAuthentication {
          * signature verification), and counted ({@link #ignoredUnverified()}).
          */
         @Override
-        public void setUnverifiedFilter(Predicate<byte[]> ignorable) {
+        public void setUnverifiedFilter(UnverifiedFilter ignorable) {
             this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
         }
 
         /** Whether {@code data} (sealed) carries a payload the receiver would ignore: read, not checked. */
         boolean ignorable(byte[] data) {
             return data.length >= SEAL_BYTES
-                    && unverifiedFilter.test(Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+                    && unverifiedFilter.ignores(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
         }
 
         private void onDatagram(Address from, byte[] data) {

@@ -1,11 +1,9 @@
 package net.smc.core.security;
 
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.function.Predicate;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Receiver;
 import net.smc.core.transport.Transport;
@@ -47,7 +45,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     private final Map<String, Address> addressOf = new HashMap<>();
     private final SignatureBudget budget = new SignatureBudget(SignatureBudget.PER_SOURCE_PER_SECOND, SignatureBudget.TOTAL_PER_SECOND);
     private AuthenticatedReceiver receiver;
-    private Predicate<byte[]> unverifiedFilter = payload -> false;
+    private UnverifiedFilter unverifiedFilter = UnverifiedFilter.NONE;
     private long droppedNoReceiver;
     private long droppedUnverified;
     private long droppedOverBudget;
@@ -176,7 +174,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     @Override
-    public void setUnverifiedFilter(Predicate<byte[]> ignorable) {
+    public void setUnverifiedFilter(UnverifiedFilter ignorable) {
         this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
     }
 
@@ -243,7 +241,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     private boolean ignorable(byte[] data) {
         try {
             return FrameCodec.read(data) instanceof Frame.Signed s
-                    && unverifiedFilter.test(Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()));
+                    && unverifiedFilter.ignores(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart());
         } catch (Malformed m) {
             return false; // refused and counted by the endpoint
         }

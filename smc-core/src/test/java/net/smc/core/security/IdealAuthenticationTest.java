@@ -62,7 +62,7 @@ class IdealAuthenticationTest {
 
     @Test
     void aPayloadTheReceiverWouldIgnore_isDroppedBeforeItsChecks_andTheCpuModelCanAskSo() {
-        endpointB.setUnverifiedFilter(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("IGNORED"));
+        endpointB.setUnverifiedFilter((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("IGNORED"));
         endpointA.broadcast("IGNORED discovery".getBytes(StandardCharsets.UTF_8));
         sendAndDeliver("answered");
         assertEquals(List.of("uav-a:answered"), heardByB);

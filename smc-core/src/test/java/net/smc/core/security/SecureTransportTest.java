@@ -191,7 +191,7 @@ class SecureTransportTest {
         Cell vehicle = new Cell("uav-1", 4002);
         commander.transport.broadcast(bytes("DISCOVERY"));
         settle();
-        vehicle.transport.setUnverifiedFilter(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("IGNORED"));
+        vehicle.transport.setUnverifiedFilter((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("IGNORED"));
         byte[] forged = commander.transport.endpoint().wrapSigned(bytes("IGNORED but forged"));
         forged[forged.length - 1] ^= 1;
         Transport attacker = network.attach(Address.loopback(4666));
