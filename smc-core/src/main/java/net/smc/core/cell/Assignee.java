@@ -80,7 +80,7 @@ final class Assignee {
             merge.meetCommander(env.sender(), d.epoch());
             return;
         }
-        ctx.address(env.sender()).ifPresent(a -> ctx.send(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
+        ctx.address(env.sender()).ifPresent(a -> ctx.sendWithoutHandshake(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
     }
 
     /**

@@ -28,6 +28,7 @@ import net.smc.core.transport.Scheduler;
 import net.smc.core.transport.Transport;
 import net.smc.policy.api.Diagnostic;
 import net.smc.policy.api.TeamAddress;
+import net.smc.core.transport.Address;
 import net.smc.policy.api.TeamLink;
 import net.smc.policy.RunResult;
 
@@ -134,6 +135,11 @@ public final class Cell {
             }
 
             @Override
+            public boolean checkHeld(Address from) {
+                return auth != null && auth.checkHeld(from);
+            }
+
+            @Override
             public void deliver(Caller caller, String role, String event, List<Object> values) {
                 gateway.raise(caller, role, event, values.toArray());
             }
@@ -186,6 +192,7 @@ public final class Cell {
         if (auth != null) {
             protocol.shareDecodes(b.sharedDecodes);
             auth.setUnverifiedFilter(protocol::ignoresUnverified);
+            auth.holdUnverified(protocol::readsUnverified, protocol::onUnverified);
         }
         engine.teamLink(new TeamLink() {
             @Override

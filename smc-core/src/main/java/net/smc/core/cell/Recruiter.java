@@ -14,6 +14,7 @@ import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
 import net.smc.core.cell.TeamState.PendingCapability;
 import net.smc.core.cell.TeamState.Refusal;
+import net.smc.core.cell.TeamState.Unchecked;
 import net.smc.core.comm.DeliveryListener;
 import net.smc.core.comm.FailureReason;
 import net.smc.core.message.AssignmentResponse;
@@ -51,6 +52,8 @@ final class Recruiter {
     private final Seating seating;
     private final TeamCounts counts;
     private final BackupCommander backup;
+    /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
+    private String checking;
     /** The vehicle whose {@code newUAV} the policies are deciding on now, or null. */
     private String deciding;
     /** Whether the policies asked for {@link #deciding}'s full description while deciding. */
@@ -64,11 +67,14 @@ final class Recruiter {
     private final PolicyServer policies;
     /** How many vehicles are asked for their full descriptions at a time. */
     private final CapabilityAsks asks;
+    /** The discovery replies decided on together: a burst, those that came while the role was loading. */
+    private final ReplyBatches batches;
 
     Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
         this.rediscover = rediscover;
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
+        this.batches = new ReplyBatches(ctx, st, this::decide, this::check);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -86,31 +92,85 @@ final class Recruiter {
         }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
+        if (env.sender().equals(checking)) {
+            return; // a held reply checked now: who asked for the check decides on it
+        }
         if (st.owned.isEmpty()) {
             // An answer to the discovery sent as the assignment arrived: the role's policies decide on
             // it once the role has started (takeUpEarlyReplies).
             st.earlyReplies.add(env.sender());
             return;
         }
-        decide(env.sender(), r.summary(), now);
+        batches.add(env.sender());
     }
 
     /**
-     * The role this cell was taking has started: its policies decide on the vehicles that answered
-     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply; on
-     * those that answered within a heartbeat period, as an older answer may no longer hold (the
-     * vehicle has taken a role since), and a fresh discovery costs less than an assignment refused.
+     * A discovery reply the transport holds unchecked ({@code AuthenticatingTransport.holdUnverified}),
+     * from a vehicle that claims to be {@code claimed}: remembered as a vehicle to check, and put
+     * with the others of its burst (or, while this cell's role is loading, with the early replies).
+     * Nothing in it is acted on: when the batch is decided on, the replies are checked in this
+     * manager's order among its siblings, one at a time while a seat is open, and each reply that
+     * passes is decided on as any discovery reply ({@link #check}). So a manager that hears a hundred
+     * vehicles and seats ten makes about ten first contacts, not a hundred; a forged reply costs one
+     * check and is never decided on.
      */
-    void takeUpEarlyReplies() {
-        List<String> early = List.copyOf(st.earlyReplies);
-        st.earlyReplies.clear();
+    void onUnverifiedReply(String claimed, Address from, DiscoveryReply r) {
+        if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())
+                || !r.summary().vehicle().equals(claimed)) {
+            return;
+        }
+        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis()));
+        if (st.owned.isEmpty()) {
+            st.earlyReplies.add(claimed);
+            return;
+        }
+        batches.add(claimed);
+    }
+
+    /**
+     * Checks the reply held from {@code vehicle}, if one is: when it passes, it is in {@code st.heard}
+     * (and not decided on here). Whether {@code vehicle}'s reply is now checked and heard.
+     */
+    boolean check(String vehicle) {
+        Unchecked u = st.unchecked.remove(vehicle);
+        if (u == null) {
+            return st.heard.containsKey(vehicle);
+        }
+        checking = vehicle;
+        try {
+            ctx.host().checkHeld(u.from());
+        } finally {
+            checking = null;
+        }
+        Heard heard = st.heard.get(vehicle);
+        return heard != null && heard.atMillis() >= u.atMillis();
+    }
+
+    /**
+     * Checks the replies held from vehicles that answered within {@code windowMillis}, in the order
+     * of their names, until one passes whose summary {@code wanted} accepts: for a choice that reads
+     * the free vehicles heard of (Supervisor's reassignment and swaps), which must see checked
+     * replies only. Whether one was found.
+     */
+    boolean checkUntil(long windowMillis, java.util.function.Predicate<CapabilitySummary> wanted) {
         long now = ctx.clock().nowMillis();
-        for (String vehicle : early) {
-            Heard heard = st.heard.get(vehicle);
-            if (heard != null && !st.owned.isEmpty() && now - heard.atMillis() <= ctx.timing().comTimeoutMillis()) {
-                decide(vehicle, heard.summary(), now);
+        for (String vehicle : st.unchecked.entrySet().stream().filter(e -> now - e.getValue().atMillis() <= windowMillis)
+                .map(Map.Entry::getKey).sorted().toList()) {
+            if (check(vehicle) && !st.children.containsKey(vehicle) && wanted.test(st.heard.get(vehicle).summary())) {
+                return true;
             }
         }
+        return false;
+    }
+
+    /** The role this cell was taking has started: its policies decide on the vehicles that answered meanwhile. */
+    void takeUpEarlyReplies() {
+        batches.takeUpEarly();
+    }
+
+    /** The cell stops: replies not yet decided on are dropped. */
+    void stop() {
+        batches.stop();
     }
 
     /** Table I and Algorithm 2 on a free vehicle that answered discovery with {@code summary}. */
@@ -210,34 +270,8 @@ final class Recruiter {
      */
     private void lookAgain() {
         askDeferred();
-        decideOnHeard();
+        batches.decideOnHeard();
         rediscover.run();   // does nothing while requests are out or no seat is open: their ends look again
-    }
-
-    /**
-     * Puts the vehicles that answered this cell's discovery within the first retransmission
-     * timeout of the critical messages, and are neither its children nor being given a seat, to the
-     * policies again, in the order they answered, while a seat is open: managers of the same role
-     * hear the same free vehicles and often pick the same one first, and the one that lost it need
-     * not discover again (a round trip) to find the others that answered it. A vehicle that turns
-     * out taken refuses, and is forgotten (assignmentFailed).
-     */
-    private void decideOnHeard() {
-        long now = ctx.clock().nowMillis();
-        long window = ctx.timing().senderSettings().initialTimeoutMillis();
-        List<Map.Entry<String, Heard>> recent = st.heard.entrySet().stream()
-                .filter(e -> now - e.getValue().atMillis() <= window)
-                .sorted(Map.Entry.comparingByValue(java.util.Comparator.comparingLong(Heard::atMillis)))
-                .toList();
-        for (Map.Entry<String, Heard> e : recent) {
-            if (!st.hasVacancy()) {
-                return;
-            }
-            String vehicle = e.getKey();
-            if (st.owned.values().stream().noneMatch(o -> vehicle.equals(o.pendingFor))) {
-                decide(vehicle, e.getValue().summary(), now);
-            }
-        }
     }
 
     private void askDeferred() {
@@ -390,6 +424,7 @@ final class Recruiter {
             // The vehicle declined a capability request: it took a seat from another manager since it
             // answered discovery. The request no longer holds rediscovery back; look again now.
             st.heard.remove(vehicle);
+            st.unchecked.remove(vehicle);
             lookAgain();
             return;
         }
@@ -449,6 +484,7 @@ final class Recruiter {
         }
         st.handover.remove(seat.get().role());
         st.heard.remove(vehicle);
+        st.unchecked.remove(vehicle);
         ctx.emit(CellEvent.Kind.ASSIGNED, seat.get() + " to " + vehicle + " (now holds " + child.seats + ")");
         backup.sendRosterIfBackup();
         counts.updateMissionState();
@@ -466,6 +502,7 @@ final class Recruiter {
             st.linksChanged();
         }
         st.heard.remove(vehicle); // it refused, or fell silent: what it answered no longer holds
+        st.unchecked.remove(vehicle);
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
         // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
         // say), not at the next tick.
@@ -486,6 +523,7 @@ final class Recruiter {
         st.abandoned.values().removeIf(until -> now >= until);
         st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
         st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        st.unchecked.values().removeIf(u -> now - u.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
         st.refused.values().removeIf(r -> now - r.atMillis() >= ctx.timing().refusalMillis());
         policies.expire(now);
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {

@@ -315,11 +315,10 @@ final class Supervisor {
         }
         MissionRole wanted = ctx.slots().role(role);
         long now = ctx.clock().nowMillis();
-        Optional<String> free = st.heard.entrySet().stream()
-                .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
-                .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
-                .filter(e -> wanted.requirement().isMetBy(e.getValue().summary()))
-                .map(Map.Entry::getKey).sorted().findFirst();
+        Optional<String> free = freeFor(wanted, now);
+        if (free.isEmpty() && recruiter.checkUntil(ctx.timing().failureTimeoutMillis(), wanted.requirement()::isMetBy)) {
+            free = freeFor(wanted, now); // replies held unchecked, checked now: only checked ones are chosen from
+        }
         if (free.isPresent()) {
             ctx.emit(CellEvent.Kind.REASSIGNING, seat.get() + " (scheme " + scheme + ") to free vehicle " + free.get());
             recruiter.requestFullCapability(free.get(), role);
@@ -395,6 +394,15 @@ final class Supervisor {
         return true;
     }
 
+    /** The first by name of the free vehicles heard lately (checked replies) that can take {@code wanted}. */
+    private Optional<String> freeFor(MissionRole wanted, long now) {
+        return st.heard.entrySet().stream()
+                .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
+                .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
+                .filter(e -> wanted.requirement().isMetBy(e.getValue().summary()))
+                .map(Map.Entry::getKey).sorted().findFirst();
+    }
+
     /**
      * A local improvement towards the reasonably-optimal configuration: an open seat (vacant, or
      * hosted) that no free vehicle heard of can take goes to a child holding a seat of another role
@@ -404,13 +412,14 @@ final class Supervisor {
     private void swapTowardsOptimal(long now) {
         for (Seat open : st.owned.keySet().stream().filter(st::open).sorted(ctx.slots()::compare).toList()) {
             MissionRole wanted = ctx.slots().role(open.role());
+            if (freeFor(wanted, now).isPresent()
+                    || recruiter.checkUntil(ctx.timing().failureTimeoutMillis(), wanted.requirement()::isMetBy)) {
+                continue; // discovery will fill it directly
+            }
             List<CapabilitySummary> free = st.heard.entrySet().stream()
                     .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
                     .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
                     .map(e -> e.getValue().summary()).toList();
-            if (free.stream().anyMatch(f -> wanted.requirement().isMetBy(f))) {
-                continue; // discovery will fill it directly
-            }
             if (st.owned.get(open).holder == null && promoteChild(open)) {
                 return;
             }

@@ -129,6 +129,11 @@ record TeamContext(String self, String missionId, Slots slots, Timing timing, lo
         comm.send(to, m);
     }
 
+    /** Connectionless, starting no session: a discovery reply ({@code CommunicationManager.sendWithoutHandshake}). */
+    void sendWithoutHandshake(Address to, Message m) {
+        comm.sendWithoutHandshake(to, m);
+    }
+
     void reject(Envelope env, String why) {
         rejected.merge(env.type().name(), 1L, Long::sum);
         emit(CellEvent.Kind.REJECTED, env.type() + " from " + env.sender() + ": " + why);

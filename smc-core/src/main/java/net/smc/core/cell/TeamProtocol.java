@@ -37,6 +37,7 @@ import net.smc.core.mission.Mission;
 import net.smc.core.role.RoleLoadException;
 import net.smc.core.router.MessageRouter;
 import net.smc.core.security.Credential;
+import net.smc.core.transport.Address;
 import net.smc.core.transport.Cancellable;
 
 /**
@@ -74,6 +75,15 @@ final class TeamProtocol implements DiscoveryActions {
 
         /** The credential a peer authenticated with; empty when it presented none or the cell does not authenticate. */
         Optional<Credential> credentialOf(String vehicle);
+
+        /**
+         * Checks the datagram the transport held unchecked from {@code from} ({@code
+         * AuthenticatingTransport.checkHeld}); when it passes, its message is handled before this
+         * returns. Whether one was held.
+         */
+        default boolean checkHeld(Address from) {
+            return false;
+        }
 
         /**
          * Raises in {@code role} an event another vehicle's role published, with that role as the
@@ -239,6 +249,25 @@ final class TeamProtocol implements DiscoveryActions {
                 && assignee.ignores(d.envelope().sender(), discovery);
     }
 
+    /**
+     * Whether the authenticating transport should hold the payload {@code data[offset, offset + length)}
+     * (read in place) unchecked for this cell to read first ({@code AuthenticatingTransport.holdUnverified}): a discovery reply (not a fragment
+     * of one). A manager reads the answers to its discovery to choose whom to contact, and checks (a
+     * credential verification, then a key agreement as it contacts the vehicle) only those it tries
+     * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
+     */
+    boolean readsUnverified(byte[] data, int offset, int length) {
+        return length > TYPE_AT && (data[offset + TYPE_AT] & 0xFF) == MessageType.DISCOVERY_REPLY.code();
+    }
+
+    /** A payload held unchecked ({@link #readsUnverified}) from {@code from}: who claims to answer, for the recruiter's choice. */
+    void onUnverified(Address from, byte[] datagram) {
+        if (!stopped && peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof DiscoveryReply r
+                && !d.envelope().sender().equals(ctx.self())) {
+            recruiter.onUnverifiedReply(d.envelope().sender(), from, r);
+        }
+    }
+
     /** The router selects by type, so the body is of {@code body}'s class: the cast names, it does not choose. */
     private <M extends Message> void route(MessageRouter router, MessageType type, Class<M> body,
                                            BiConsumer<Envelope, M> handler) {
@@ -295,6 +324,7 @@ final class TeamProtocol implements DiscoveryActions {
             tickTimer.cancel();
         }
         supervisor.stop();
+        recruiter.stop();
     }
 
     /** Leaves the team gracefully: tells parent and children, gives up every role, answers no discovery. */

@@ -80,6 +80,13 @@ final class TeamState {
     final Map<String, PendingCapability> capabilityRequests = new HashMap<>();
     final Map<String, Heard> heard = new HashMap<>();
     /**
+     * The vehicles whose discovery replies the transport holds unchecked, by the vehicle each claims
+     * to be: where the reply came from and when (Recruiter.onUnverifiedReply). Nothing here is proven:
+     * it chooses only whose reply to check; a reply is acted on once checked (then it is in
+     * {@link #heard}).
+     */
+    final Map<String, Unchecked> unchecked = new HashMap<>();
+    /**
      * Vehicles the policies wanted asked for their full description, by the roles they were wanted
      * for, while as many requests for those roles were out as the role has open seats and a margin
      * (Recruiter): asked, oldest first, when a request out ends without filling a seat.
@@ -131,6 +138,10 @@ final class TeamState {
     }
 
     record Heard(CapabilitySummary summary, long atMillis) {
+    }
+
+    /** A discovery reply held unchecked: the address it came from (the key to check it by) and when. */
+    record Unchecked(Address from, long atMillis) {
     }
 
     /**

@@ -159,6 +159,29 @@ public final class CommunicationManager {
     }
 
     /**
+     * Sends {@code message} to {@code to} connectionless and, on an {@link AuthenticatingTransport},
+     * without starting a session ({@link AuthenticatingTransport#sendWithoutHandshake}): for a message
+     * its receiver reads before checking it, and answers, if at all, by contacting this cell (a
+     * discovery reply).
+     *
+     * @return the message's id
+     * @throws IllegalArgumentException when the type is critical: its acknowledgement would need the session
+     */
+    public long sendWithoutHandshake(Address to, Message message) {
+        Objects.requireNonNull(to, "to");
+        Objects.requireNonNull(message, "message");
+        if (critical.contains(message.type())) {
+            throw new IllegalArgumentException(message.type() + " to " + to + " is a critical type; it goes reliably"
+                    + " (send), under a session, not without a handshake");
+        }
+        checkRunning(message);
+        long id = ids.next();
+        wire.sendWithoutHandshake(to, wire.encode(new Envelope(vehicleId, id, message)));
+        counters.unicasts++;
+        return id;
+    }
+
+    /**
      * Sends a critical message to {@code to} reliably; {@code listener} learns whether it was
      * acknowledged or given up on.
      *

@@ -47,6 +47,18 @@ final class Wire {
         }
     }
 
+    /** As {@link #send}, starting no session on an authenticating transport ({@code AuthenticatingTransport.sendWithoutHandshake}). */
+    void sendWithoutHandshake(Address to, List<byte[]> datagrams) {
+        if (!(transport instanceof net.smc.core.security.AuthenticatingTransport auth)) {
+            send(to, datagrams);
+            return;
+        }
+        for (byte[] d : datagrams) {
+            auth.sendWithoutHandshake(to, d);
+            counters.datagramsSent++;
+        }
+    }
+
     void broadcast(List<byte[]> datagrams) {
         for (byte[] d : datagrams) {
             transport.broadcast(d);

@@ -2,6 +2,7 @@ package net.smc.core.security;
 
 import java.util.Optional;
 
+import net.smc.core.transport.Address;
 import net.smc.core.transport.Transport;
 
 /**
@@ -33,7 +34,35 @@ public interface AuthenticatingTransport extends Transport {
      * sender gains anything by it. The test must not answer {@code true} for a payload the receiver
      * acts on, and sees the payload's bytes only, not the checked sender. Payloads under a session or
      * the team key are checked by a MAC, which costs about as little as the test, and need not be
-     * offered to it. None by default ({@link UnverifiedFilter#NONE}): every payload is checked.
+     * offered to it. None by default ({@link UnverifiedTest#NONE}): every payload is checked.
      */
-    void setUnverifiedFilter(UnverifiedFilter ignorable);
+    void setUnverifiedFilter(UnverifiedTest ignorable);
+
+    /**
+     * Holds the signed datagrams whose payload {@code readable} accepts, unchecked, and hands their
+     * payloads to {@code receiver} to read first: a manager that hears a hundred vehicles answer its
+     * discovery and seats ten reads the answers to choose whom to contact, and pays the credential
+     * check and the key agreement of a first contact only for those ({@link #checkHeld}). Nothing a
+     * held payload says is proven (not its sender either): a forged one can only make the receiver
+     * check it, which it fails. The newest datagram per source address is held, a bounded number in
+     * all (the oldest goes first). Payloads under a session or the team key are checked by a MAC and
+     * delivered as usual. None by default: every payload is checked as it comes.
+     */
+    void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver);
+
+    /**
+     * Checks the datagram held from {@code from} now, as if it had just arrived: when it passes every
+     * check its payload goes to the authenticated receiver (on this thread, before this returns).
+     *
+     * @return whether a datagram was held from {@code from} (it is no longer held, passed or not)
+     */
+    boolean checkHeld(Address from);
+
+    /**
+     * Sends {@code data} to {@code to} as {@link #send} does, but starts no session: signed when there
+     * is none. For a message its receiver may read before checking it and answer by contacting the
+     * sender (a discovery reply): a vehicle that answers many managers then shakes hands only with
+     * those that contact it.
+     */
+    void sendWithoutHandshake(Address to, byte[] data);
 }

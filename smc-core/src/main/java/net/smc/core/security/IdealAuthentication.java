@@ -7,11 +7,13 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.WeakHashMap;
+import java.util.function.BiConsumer;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
@@ -83,6 +85,8 @@ public final class IdealAuthentication {
     private long tampered;
     private long replayed;
     private long ignoredUnverified;
+    private long heldUnverified;
+    private BiConsumer<Address, Address> heldChecked = (at, from) -> { };
 
     /** An instance whose tags are keyed by a fixed key (the simulated adversary never reads it). */
     public IdealAuthentication(TrustAnchor trust, Clock clock) {
@@ -131,6 +135,26 @@ public final class IdealAuthentication {
         return peer != null && peer.endpoint.ignorable(datagram);
     }
 
+    /**
+     * Whether the endpoint at {@code at} holds {@code datagram} (sealed, as the network carries it)
+     * unchecked for its receiver to read first ({@link Endpoint#holdUnverified}): what a CPU model
+     * asks to charge no verification and no first contact for it. Asked just before the datagram is
+     * worked on, as {@link #dropsUnverified} is.
+     */
+    public boolean holdsUnverified(Address at, byte[] datagram) {
+        Peer peer = peers.get(at);
+        return peer != null && peer.endpoint.holdable(datagram);
+    }
+
+    /**
+     * Tells {@code listener} (the endpoint's address, then the address the datagram came from) each
+     * time an endpoint checks a datagram it held ({@link Endpoint#checkHeld}): for a CPU model, the
+     * check a real transport does then (the credential and the signature).
+     */
+    public void onHeldChecked(BiConsumer<Address, Address> listener) {
+        this.heldChecked = Objects.requireNonNull(listener, "listener");
+    }
+
     /** {@link TrustAnchor#verify}, with the signature's verification remembered across instances. */
     private CredentialStatus verify(Credential credential) {
         long now = clock.nowMillis();
@@ -162,6 +186,11 @@ public final class IdealAuthentication {
     /** Datagrams dropped unchecked because their receiver would have ignored them ({@link Endpoint#setUnverifiedFilter}). */
     public long ignoredUnverified() {
         return ignoredUnverified;
+    }
+
+    /** Datagrams held unchecked for their receiver to read first ({@link Endpoint#holdUnverified}). */
+    public long heldUnverified() {
+        return heldUnverified;
     }
 
     private Peer newPeer(Address address) {
@@ -234,6 +263,8 @@ public final class IdealAuthentication {
     public static final int PAYLOAD_OFFSET = 8;
     private static final long FRESHNESS_MILLIS = SecuritySettings.DEFAULTS.freshnessWindowMillis();
     private static final int REPLAY_WINDOW = SecuritySettings.DEFAULTS.replayWindow();
+    /** At most this many datagrams an endpoint holds unchecked, as {@code SecureTransport.MAX_HELD}. */
+    private static final int MAX_HELD = SecureTransport.MAX_HELD;
 
     /** One vehicle's endpoint: delivers only what vouched-for vehicles sent. */
     public final class Endpoint extends ForwardingTransport implements AuthenticatingTransport {
@@ -244,7 +275,11 @@ public final class IdealAuthentication {
         /** This address's record (its seal counter is shared with its later incarnations). */
         private final Peer self;
         private AuthenticatedReceiver receiver;
-        private UnverifiedFilter unverifiedFilter = UnverifiedFilter.NONE;
+        private UnverifiedTest unverifiedFilter = UnverifiedTest.NONE;
+        private UnverifiedTest heldFilter = UnverifiedTest.NONE;
+        private UnverifiedReceiver heldReceiver;
+        /** The datagrams held unchecked, the newest per source address, oldest first. */
+        private final Map<Address, byte[]> held = new LinkedHashMap<>();
         /** The address this endpoint last sent a unicast to, and its record (a record is never replaced). */
         private Address lastTo;
         private Peer lastToPeer;
@@ -278,6 +313,40 @@ public final class IdealAuthentication {
             inner.broadcast(seal(self, localAddress(), null, 0, data));
         }
 
+        /** As {@link #send}: this layer makes no sessions (the CPU model charges the signature). */
+        @Override
+        public void sendWithoutHandshake(Address to, byte[] data) {
+            send(to, data);
+        }
+
+        /**
+         * As {@link SecureTransport#holdUnverified}, for every datagram (this layer has no sessions):
+         * one whose payload {@code readable} accepts is held before any check, its payload handed to
+         * {@code receiver}, and checked when {@link #checkHeld} asks.
+         */
+        @Override
+        public void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver) {
+            this.heldFilter = Objects.requireNonNull(readable, "readable");
+            this.heldReceiver = Objects.requireNonNull(receiver, "receiver");
+        }
+
+        @Override
+        public boolean checkHeld(Address from) {
+            byte[] data = held.remove(Objects.requireNonNull(from, "from"));
+            if (data == null) {
+                return false;
+            }
+            heldChecked.accept(localAddress(), from);
+            check(from, data);
+            return true;
+        }
+
+        /** Whether {@code data} (sealed) carries a payload the receiver reads before it is checked. */
+        boolean holdable(byte[] data) {
+            return heldReceiver != null && data.length >= SEAL_BYTES
+                    && heldFilter.test(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
+        }
+
         /** What the check of this endpoint's own credential found. */
         public CredentialStatus credentialStatus() {
             return status;
@@ -308,14 +377,14 @@ public final class IdealAuthentication {
          * signature verification), and counted ({@link #ignoredUnverified()}).
          */
         @Override
-        public void setUnverifiedFilter(UnverifiedFilter ignorable) {
+        public void setUnverifiedFilter(UnverifiedTest ignorable) {
             this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
         }
 
         /** Whether {@code data} (sealed) carries a payload the receiver would ignore: read, not checked. */
         boolean ignorable(byte[] data) {
             return data.length >= SEAL_BYTES
-                    && unverifiedFilter.ignores(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
+                    && unverifiedFilter.test(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
         }
 
         private void onDatagram(Address from, byte[] data) {
@@ -323,6 +392,21 @@ public final class IdealAuthentication {
                 ignoredUnverified++;
                 return;
             }
+            if (holdable(data)) {
+                held.remove(from);
+                if (held.size() >= MAX_HELD) {
+                    held.remove(held.keySet().iterator().next());
+                }
+                held.put(from, data);
+                heldUnverified++;
+                heldReceiver.onUnverified(from, Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+                return;
+            }
+            check(from, data);
+        }
+
+        /** Every check of a datagram that is neither dropped nor held unchecked, then its delivery. */
+        private void check(Address from, byte[] data) {
             Peer peer = peers.get(from);
             Credential sender = peer == null ? null : peer.vouched;
             if (sender == null || receiver == null) {

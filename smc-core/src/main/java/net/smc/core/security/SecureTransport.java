@@ -1,6 +1,8 @@
 package net.smc.core.security;
 
+import java.util.Arrays;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
@@ -30,13 +32,17 @@ import org.slf4j.LoggerFactory;
  * counted ({@link #droppedOverBudget}). Before that, a signed datagram whose payload the receiver
  * says it would ignore whoever sent it ({@link #setUnverifiedFilter}) is dropped unchecked and
  * counted ({@link #droppedUnverified}): a cell that hears every manager's discovery verifies only
- * those it may answer.
+ * those it may answer. A signed datagram whose payload the receiver reads before it is checked
+ * ({@link #holdUnverified}: a discovery reply) is held unchecked, and checked (within the budget)
+ * when the receiver asks ({@link #checkHeld}).
  *
  * <p>Which vehicle is at which address is learned from authenticated datagrams only (signed, or MAC'd
  * under a session). Same threading as the transport it wraps: one cell thread.
  */
 public final class SecureTransport implements AuthenticatingTransport {
     static final int PROBES_PER_RETRY = 16;
+    /** At most this many datagrams are held unchecked ({@link #holdUnverified}); the oldest goes first. */
+    static final int MAX_HELD = 256;
     private static final Logger LOG = LoggerFactory.getLogger(SecureTransport.class);
 
     private final Transport inner;
@@ -45,7 +51,12 @@ public final class SecureTransport implements AuthenticatingTransport {
     private final Map<String, Address> addressOf = new HashMap<>();
     private final SignatureBudget budget = new SignatureBudget(SignatureBudget.PER_SOURCE_PER_SECOND, SignatureBudget.TOTAL_PER_SECOND);
     private AuthenticatedReceiver receiver;
-    private UnverifiedFilter unverifiedFilter = UnverifiedFilter.NONE;
+    private UnverifiedTest unverifiedFilter = UnverifiedTest.NONE;
+    private UnverifiedTest heldFilter = UnverifiedTest.NONE;
+    private UnverifiedReceiver heldReceiver;
+    /** The signed datagrams held unchecked, the newest per source address, oldest first. */
+    private final Map<Address, byte[]> held = new LinkedHashMap<>();
+    private long heldUnverified;
     private long droppedNoReceiver;
     private long droppedUnverified;
     private long droppedOverBudget;
@@ -94,6 +105,13 @@ public final class SecureTransport implements AuthenticatingTransport {
         if (peer != null && endpoint.needsHandshake(peer)) {
             inner.send(to, endpoint.startHandshake(peer));
         }
+    }
+
+    /** As {@link #send}, but signed when there is no session with the vehicle at {@code to}, and no handshake starts. */
+    @Override
+    public void sendWithoutHandshake(Address to, byte[] data) {
+        String peer = peerAt.get(Objects.requireNonNull(to, "to"));
+        inner.send(to, peer != null && endpoint.hasSession(peer) ? endpoint.wrapFor(peer, data) : endpoint.wrapSigned(data));
     }
 
     /**
@@ -174,8 +192,29 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     @Override
-    public void setUnverifiedFilter(UnverifiedFilter ignorable) {
+    public void setUnverifiedFilter(UnverifiedTest ignorable) {
         this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
+    }
+
+    @Override
+    public void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver) {
+        this.heldFilter = Objects.requireNonNull(readable, "readable");
+        this.heldReceiver = Objects.requireNonNull(receiver, "receiver");
+    }
+
+    @Override
+    public boolean checkHeld(Address from) {
+        byte[] data = held.remove(Objects.requireNonNull(from, "from"));
+        if (data == null) {
+            return false;
+        }
+        check(from, data);
+        return true;
+    }
+
+    /** Signed datagrams held unchecked for the receiver to read first ({@link #holdUnverified}). */
+    public long heldUnverified() {
+        return heldUnverified;
     }
 
     /** Signed datagrams dropped unchecked because the receiver would have ignored their payload. */
@@ -212,6 +251,22 @@ public final class SecureTransport implements AuthenticatingTransport {
             droppedUnverified++;
             return;
         }
+        byte[] readable = isSessionTraffic(data) || heldReceiver == null ? null : heldPayload(data);
+        if (readable != null) {
+            held.remove(from);
+            if (held.size() >= MAX_HELD) {
+                held.remove(held.keySet().iterator().next());
+            }
+            held.put(from, data);
+            heldUnverified++;
+            heldReceiver.onUnverified(from, readable);
+            return;
+        }
+        check(from, data);
+    }
+
+    /** Every check of a datagram that is not dropped unchecked, then its delivery. */
+    private void check(Address from, byte[] data) {
         if (!isSessionTraffic(data) && !budget.take(from, endpoint.clock.nowMillis())) {
             droppedOverBudget++;
             LOG.debug("'{}' dropped a signed datagram of {} bytes from {} unchecked: over the signature budget", endpoint.id(), data.length, from);
@@ -241,9 +296,22 @@ public final class SecureTransport implements AuthenticatingTransport {
     private boolean ignorable(byte[] data) {
         try {
             return FrameCodec.read(data) instanceof Frame.Signed s
-                    && unverifiedFilter.ignores(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart());
+                    && unverifiedFilter.test(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart());
         } catch (Malformed m) {
             return false; // refused and counted by the endpoint
+        }
+    }
+
+    /** The payload of {@code data} when it is a signed datagram (not a HELLO) the receiver reads before it is checked, else null. */
+    private byte[] heldPayload(byte[] data) {
+        try {
+            if (FrameCodec.read(data) instanceof Frame.Signed s) {
+                return heldFilter.test(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart())
+                        ? Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()) : null;
+            }
+            return null;
+        } catch (Malformed m) {
+            return null; // refused and counted by the endpoint
         }
     }
 

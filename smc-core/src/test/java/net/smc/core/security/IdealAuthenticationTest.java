@@ -73,6 +73,37 @@ class IdealAuthenticationTest {
         assertFalse(ideal.dropsUnverified(Address.loopback(4999), onAir.get(0)), "no endpoint there");
     }
 
+    /** As the real transport: a held payload is read first, delivered only once checked, and only if it passes. */
+    @Test
+    void aHeldPayload_isReadFirst_deliveredOnlyOnceChecked_andTheCpuModelHearsOfTheCheck() {
+        List<String> read = new ArrayList<>();
+        List<String> checks = new ArrayList<>();
+        ideal.onHeldChecked((at, from) -> checks.add(at + "<" + from));
+        endpointB.holdUnverified((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("REPLY"),
+                (from, payload) -> read.add(from + " " + new String(payload, StandardCharsets.UTF_8)));
+        endpointA.sendWithoutHandshake(b, "REPLY of uav-a".getBytes(StandardCharsets.UTF_8));
+        sendAndDeliver("other");
+        Address forger = Address.loopback(4666);
+        byte[] forged = onAir.get(0).clone();
+        forged[forged.length - 1] ^= 1;
+        network.inject(forger, b, forged, 0);
+        scheduler.runFor(100);
+
+        assertEquals(List.of(a + " REPLY of uav-a", forger + " REPLY of uav-a"), read);
+        assertEquals(List.of("uav-a:other"), heardByB, "the held payload is not delivered unchecked");
+        assertTrue(ideal.holdsUnverified(b, onAir.get(0)), "what the CPU model asks, read from the sealed datagram");
+        assertFalse(ideal.holdsUnverified(b, onAir.get(1)));
+        assertFalse(ideal.holdsUnverified(a, onAir.get(0)), "a holds nothing");
+
+        assertTrue(endpointB.checkHeld(forger));
+        assertEquals(List.of("uav-a:other"), heardByB, "the forgery fails its check");
+        assertTrue(endpointB.checkHeld(a));
+        assertEquals(List.of("uav-a:other", "uav-a:REPLY of uav-a"), heardByB);
+        assertFalse(endpointB.checkHeld(a), "no longer held");
+        assertEquals(List.of(b + "<" + forger, b + "<" + a), checks);
+        assertEquals(2, ideal.heldUnverified());
+    }
+
     /** The seal's 16 bytes come off the capacity the layer above fills: a full datagram fits once sealed. */
     @Test
     void aDatagramFillingTheEndpointsCapacity_isSealedAndDelivered() {

@@ -210,6 +210,48 @@ class SecureTransportTest {
         assertEquals(0, commander.transport.droppedUnverified(), "no filter: everything checked");
     }
 
+    /**
+     * A reply held unchecked: the receiver reads it (nothing proven) and chooses whom to contact;
+     * only a check delivers it, and only one that passes. The replying side starts no handshake, so
+     * no key is agreed until the receiver contacts it.
+     */
+    @Test
+    void aHeldReply_isReadFirst_deliveredOnlyOnceCheckedAndPassed_andStartsNoHandshake() {
+        Cell commander = new Cell("cmdr", 4001);
+        Cell vehicle = new Cell("uav-1", 4002);
+        List<String> read = new ArrayList<>();
+        commander.transport.holdUnverified((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("REPLY"),
+                (from, payload) -> read.add(from + " " + new String(payload, StandardCharsets.UTF_8)));
+        commander.transport.broadcast(bytes("DISCOVER (answered by hand)"));
+        settle();
+        vehicle.transport.sendWithoutHandshake(commander.address(), bytes("REPLY of uav-1"));
+        byte[] forged = vehicle.transport.endpoint().wrapSigned(bytes("REPLY forged"));
+        forged[forged.length - 1] ^= 1;
+        Transport attacker = network.attach(Address.loopback(4666));
+        attacker.send(commander.address(), forged);
+        settle();
+
+        assertEquals(List.of(vehicle.address() + " REPLY of uav-1", Address.loopback(4666) + " REPLY forged"), read);
+        assertEquals(List.of(), commander.heard, "nothing held is delivered unchecked");
+        assertEquals(2, commander.transport.heldUnverified());
+        assertEquals(0, commander.counters().keysAgreed(), "the reply started no handshake");
+        assertEquals(0, vehicle.counters().hellosSent());
+        long badBefore = commander.counters().rejected(Rejection.BAD_SIGNATURE);
+
+        assertTrue(commander.transport.checkHeld(Address.loopback(4666)));
+        assertEquals(List.of(), commander.heard, "the forged reply fails its check");
+        assertEquals(badBefore + 1, commander.counters().rejected(Rejection.BAD_SIGNATURE));
+        assertTrue(commander.transport.checkHeld(vehicle.address()));
+        assertEquals(List.of("uav-1/SIGNED/REPLY of uav-1"), commander.heard);
+        assertFalse(commander.transport.checkHeld(vehicle.address()), "checked once: no longer held");
+
+        commander.transport.send(vehicle.address(), bytes("ASSIGN"));   // the contact: signed, with a handshake
+        settle();
+        commander.transport.send(vehicle.address(), bytes("HB"));
+        settle();
+        assertEquals(List.of("cmdr/SIGNED/DISCOVER (answered by hand)", "cmdr/SIGNED/ASSIGN", "cmdr/PAIR_MAC/HB"), vehicle.heard);
+    }
+
     @Test
     void restartedVehicle_getsANewSessionFromTheFirstMacItCannotRead() {
         Cell commander = new Cell("cmdr", 4001);

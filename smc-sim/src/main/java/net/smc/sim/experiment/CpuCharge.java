@@ -33,7 +33,14 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *   <li>a datagram its receiver drops before checking it, because the cell would ignore it whoever
  *       sent it (a discovery it would not answer: {@code AuthenticatingTransport.setUnverifiedFilter},
  *       given by {@code dropsUnverified}), costs its decoding only: no verification, and it is no
- *       contact.</li>
+ *       contact;</li>
+ *   <li>a discovery reply to a cell not met yet is signed and starts no handshake (the team
+ *       protocols send it so: {@code AuthenticatingTransport.sendWithoutHandshake}); its receiver,
+ *       which holds it unchecked to read it first (given by {@code holdsUnverified}), pays its
+ *       decoding only, and no contact is made. When the receiver checks it later
+ *       ({@link #heldChecked}) that check (the credential's verification and the signature's, or
+ *       a MAC when the two have met) is charged with the receiver's next datagram; the first contact
+ *       follows when one of the two sends the other something.</li>
  * </ul>
  * Vehicles are known by the sender field of the datagrams they send. Also counts the datagrams and
  * bytes sent (a broadcast once: one radio transmission). Deterministic: no clock, no randomness.
@@ -49,6 +56,7 @@ public final class CpuCharge implements CpuModel {
     private final ToIntFunction<String> newUavPolicies;
     private final BiPredicate<String, String> loads;
     private final BiPredicate<Address, byte[]> dropsUnverified;
+    private final BiPredicate<Address, byte[]> holdsUnverified;
     /** What is known of each address that sent or received: its number, vehicle and contacts. */
     private final Map<Address, Node> nodes = new HashMap<>();
     private final CpuLedger ledger = new CpuLedger();
@@ -64,19 +72,29 @@ public final class CpuCharge implements CpuModel {
      */
     public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
                      int payloadOffset) {
-        this(costs, newUavPolicies, loads, payloadOffset, (at, data) -> false);
+        this(costs, newUavPolicies, loads, payloadOffset, (at, data) -> false, (at, data) -> false);
+    }
+
+    /** As the full constructor, with no cell holding datagrams unchecked. */
+    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+                     int payloadOffset, BiPredicate<Address, byte[]> dropsUnverified) {
+        this(costs, newUavPolicies, loads, payloadOffset, dropsUnverified, (at, data) -> false);
     }
 
     /**
-     * As {@link #CpuCharge(CpuCosts, ToIntFunction, BiPredicate, int)}, with the receivers' test
-     * of what they drop unchecked.
+     * As {@link #CpuCharge(CpuCosts, ToIntFunction, BiPredicate, int)}, with the receivers' tests
+     * of what they drop unchecked and what they hold unchecked.
      *
      * @param dropsUnverified whether the cell at this address drops this datagram (as the network
      *                        carries it) before checking it; asked when its CPU takes the datagram up
+     * @param holdsUnverified whether the cell at this address holds this datagram unchecked, to read
+     *                        it first ({@code IdealAuthentication.holdsUnverified}); asked likewise
      */
     public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
-                     int payloadOffset, BiPredicate<Address, byte[]> dropsUnverified) {
+                     int payloadOffset, BiPredicate<Address, byte[]> dropsUnverified,
+                     BiPredicate<Address, byte[]> holdsUnverified) {
         this.dropsUnverified = Objects.requireNonNull(dropsUnverified, "dropsUnverified");
+        this.holdsUnverified = Objects.requireNonNull(holdsUnverified, "holdsUnverified");
         if (payloadOffset < 0) {
             throw new IllegalArgumentException("payload offset " + payloadOffset + " must be 0 or more");
         }
@@ -95,10 +113,13 @@ public final class CpuCharge implements CpuModel {
             node.vehicle = sender(data);
             ledger.name(node.number, node.vehicle);
         }
-        ledger.sent(type(data), data.length);
-        double ns = charge(node, Category.CODEC, codec(data.length));
+        int type = type(data);
+        ledger.sent(type, data.length);
+        double ns = owed(node) + charge(node, Category.CODEC, codec(data.length));
         if (to == null) {
             ns += charge(node, Category.SIGN, costs.signNanos());
+        } else if (type == MessageType.DISCOVERY_REPLY.code() && !node.met(node(to))) {
+            ns += charge(node, Category.SIGN, costs.signNanos()); // signed, no handshake: no contact yet
         } else {
             ns += charge(node, Category.MAC, mac(data.length));
             if (node.firstContact(node(to))) {
@@ -113,9 +134,13 @@ public final class CpuCharge implements CpuModel {
         Node node = node(at);
         if (dropsUnverified.test(at, data)) {
             ledger.droppedUnverified(node.number, type(data));
-            return micros(charge(node, Category.CODEC, codec(data.length)));
+            return micros(owed(node) + charge(node, Category.CODEC, codec(data.length)));
         }
-        double ns = charge(node, Category.CODEC, codec(data.length))
+        if (holdsUnverified.test(at, data)) {
+            ledger.heldUnverified(node.number, type(data));
+            return micros(owed(node) + charge(node, Category.CODEC, codec(data.length)));
+        }
+        double ns = owed(node) + charge(node, Category.CODEC, codec(data.length))
                 + (broadcast ? charge(node, Category.VERIFY, costs.verifyNanos()) : charge(node, Category.MAC, mac(data.length)));
         if (node.firstContact(node(from))) {
             ns += charge(node, Category.HANDSHAKE, costs.verifyNanos() + costs.agreeNanos());
@@ -130,6 +155,27 @@ public final class CpuCharge implements CpuModel {
                     costs.conditionNanos() * (vehicle == null ? 0 : newUavPolicies.applyAsInt(vehicle)));
         }
         return micros(ns);
+    }
+
+    /**
+     * The cell at {@code at} checks now the datagram it held from {@code from}: a credential
+     * verification and a signature verification (a MAC if the two have met), charged, as part of the
+     * first contact, with the cell's next datagram sent or received.
+     */
+    public void heldChecked(Address at, Address from) {
+        Node node = node(at);
+        ledger.heldChecked(node.number);
+        node.owedNanos += node.met(node(from)) ? costs.macNanos() : 2 * costs.verifyNanos();
+    }
+
+    /** Charges {@code node} the work it did since its last datagram (checks of held ones), as handshake. */
+    private double owed(Node node) {
+        if (node.owedNanos == 0) {
+            return 0;
+        }
+        double ns = node.owedNanos;
+        node.owedNanos = 0;
+        return charge(node, Category.HANDSHAKE, ns);
     }
 
     private double charge(Node node, Category category, double ns) {
@@ -235,9 +281,16 @@ public final class CpuCharge implements CpuModel {
         /** The numbers of the nodes this one has sent to or received from. */
         final BitSet contacts = new BitSet();
         String vehicle;
+        /** Work done since this node's last datagram, to be charged with its next. */
+        double owedNanos;
 
         Node(int number) {
             this.number = number;
+        }
+
+        /** Whether this node has sent to or received from {@code other} (other than held datagrams). */
+        boolean met(Node other) {
+            return contacts.get(other.number);
         }
 
         /** Records a contact with {@code other}; whether it is the first. */

@@ -40,6 +40,9 @@ public final class CpuLedger {
     private final List<double[]> nanos = new ArrayList<>();
     private final List<long[]> received = new ArrayList<>();
     private final List<long[]> unverified = new ArrayList<>();
+    private final List<long[]> held = new ArrayList<>();
+    /** Per cell, how many of the datagrams it held unchecked it checked later. */
+    private final List<long[]> heldChecked = new ArrayList<>();
     private final List<String> names = new ArrayList<>();
     private final long[] sentCount = new long[KINDS];
     private final long[] sentBytes = new long[KINDS];
@@ -72,6 +75,20 @@ public final class CpuLedger {
         }
     }
 
+    /** Cell {@code node} received a datagram of kind {@code type} and held it unchecked, to read it first. */
+    void heldUnverified(int node, int type) {
+        received(node, type);
+        if (type >= 0) {
+            held.get(node)[type]++;
+        }
+    }
+
+    /** Cell {@code node} checked a datagram it held. */
+    void heldChecked(int node) {
+        grow(node);
+        heldChecked.get(node)[0]++;
+    }
+
     void name(int node, String vehicle) {
         grow(node);
         names.set(node, vehicle);
@@ -82,6 +99,8 @@ public final class CpuLedger {
             nanos.add(new double[CATEGORIES.length]);
             received.add(new long[KINDS]);
             unverified.add(new long[KINDS]);
+            held.add(new long[KINDS]);
+            heldChecked.add(new long[1]);
             names.add(null);
         }
     }
@@ -135,6 +154,26 @@ public final class CpuLedger {
         return node >= 0 && node < unverified.size() ? byKind(unverified.get(node)) : Map.of();
     }
 
+    /** Datagrams cell {@code node} received and held unchecked, to read first, by kind. */
+    public Map<String, Long> heldUnverifiedByKind(int node) {
+        return node >= 0 && node < held.size() ? byKind(held.get(node)) : Map.of();
+    }
+
+    /** How many of the datagrams cell {@code node} held unchecked it checked later. */
+    public long heldCheckedCount(int node) {
+        return node >= 0 && node < heldChecked.size() ? heldChecked.get(node)[0] : 0;
+    }
+
+    /** Datagrams all cells held unchecked, to read first. */
+    public long heldUnverifiedTotal() {
+        return held.stream().mapToLong(counts -> java.util.Arrays.stream(counts).sum()).sum();
+    }
+
+    /** How many of the datagrams all cells held unchecked they checked later. */
+    public long heldCheckedTotal() {
+        return heldChecked.stream().mapToLong(c -> c[0]).sum();
+    }
+
     /** Datagrams the team sent, by kind (a broadcast once). */
     public Map<String, Long> sentByKind() {
         return byKind(sentCount);
@@ -186,6 +225,16 @@ public final class CpuLedger {
         if (!dropped.isEmpty()) {
             s.append("\n  of which it dropped unchecked (it would ignore them):");
             dropped.forEach((k, n) -> s.append(' ').append(k).append(' ').append(n));
+        }
+        Map<String, Long> kept = heldUnverifiedByKind(b);
+        if (!kept.isEmpty()) {
+            s.append("\n  of which it held unchecked (read to choose whom to contact):");
+            kept.forEach((k, n) -> s.append(' ').append(k).append(' ').append(n));
+            s.append(", and checked ").append(heldCheckedCount(b)).append(" of them");
+        }
+        if (heldUnverifiedTotal() > 0) {
+            s.append("\nteam held unchecked ").append(heldUnverifiedTotal()).append(" datagrams and checked ")
+                    .append(heldCheckedTotal()).append(" of them");
         }
         s.append("\nteam sent (datagrams/bytes):");
         Map<String, Long> bytes = sentBytesByKind();

@@ -60,8 +60,11 @@ public final class SetupTimeRun {
                 .vehicles(generated.vehicles()).scheme(scheme).link(radio.link()).listener(progress).build();
         // The team simulation seals every datagram (IdealAuthentication): the message follows the seal's counter.
         // A cell drops a discovery it would not answer before checking it: that costs no verification.
+        // A manager holds discovery replies unchecked and checks those of the vehicles it tries to seat.
+        IdealAuthentication auth = sim.idealAuthentication();
         CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
-                IdealAuthentication.PAYLOAD_OFFSET, sim.idealAuthentication()::dropsUnverified);
+                IdealAuthentication.PAYLOAD_OFFSET, auth::dropsUnverified, auth::holdsUnverified);
+        auth.onHeldChecked(charge::heldChecked);
         InMemoryNetwork network = sim.network();
         network.setCpuModel(charge);
         network.setBandwidth(radio.bytesPerSecond());

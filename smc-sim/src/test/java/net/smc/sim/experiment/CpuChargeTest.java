@@ -11,6 +11,8 @@ import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.MessageEncoder;
 import net.smc.core.message.PolicyReply;
@@ -120,5 +122,46 @@ class CpuChargeTest {
         assertEquals((COSTS.verifyNanos() + COSTS.agreeNanos()) / 1e6, checked.get(Category.HANDSHAKE), 1e-9,
                 "the dropped datagram was no contact: the checked one is the first");
         assertEquals(Map.of("POLICY_REPLY", 1L), ledger.droppedUnverifiedByKind(0));
+    }
+
+    /** A discovery reply as the team simulation's network carries it. */
+    private static byte[] sealedDiscoveryReply(String sender) {
+        byte[] message = new MessageEncoder().datagrams(new Envelope(sender, 7, new DiscoveryReply(3, "m",
+                new CapabilitySummary(sender, new java.util.TreeSet<>(), new java.util.TreeSet<>())))).get(0);
+        return ByteBuffer.allocate(message.length + 16).putLong(42).put(message).putLong(99).array();
+    }
+
+    /**
+     * A discovery reply is signed and starts no handshake; its receiver, holding it unchecked, pays
+     * its decoding only. The check, when the receiver makes it, is charged with its next datagram,
+     * and the first contact when it then sends to the vehicle.
+     */
+    @Test
+    void aHeldDiscoveryReplyCostsItsDecoding_itsCheckAndTheFirstContactComeOnlyWhenTheManagerContactsTheVehicle() {
+        byte[] reply = sealedDiscoveryReply("b0l2n0");
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
+                (at, data) -> false, (at, data) -> at.equals(manager) && data == reply);
+        introduce(charge, manager, "b0l1n0");                    // node 0
+        charge.sendMicros(vehicle, manager, reply);              // node 1
+        CpuLedger ledger = charge.ledger();
+        Map<Category, Double> sent = ledger.millisByCategory(1);
+        assertEquals(COSTS.signNanos() / 1e6, sent.get(Category.SIGN), 1e-9, "signed");
+        assertFalse(sent.containsKey(Category.HANDSHAKE), "no handshake started");
+        assertFalse(sent.containsKey(Category.MAC));
+
+        double before = ledger.totalMillis(0);
+        charge.receiveMicros(manager, vehicle, reply, false);
+        assertEquals((COSTS.codecNanos() + COSTS.codecNanosPerByte() * reply.length) / 1e6, ledger.totalMillis(0) - before, 1e-9,
+                "held: decoding only");
+        assertEquals(Map.of("DISCOVERY_REPLY", 1L), ledger.heldUnverifiedByKind(0));
+        assertFalse(ledger.millisByCategory(0).containsKey(Category.HANDSHAKE));
+
+        charge.heldChecked(manager, vehicle);
+        assertEquals(1, ledger.heldCheckedCount(0));
+        byte[] assignment = sealedPolicyReply("b0l1n0");
+        charge.sendMicros(manager, vehicle, assignment);
+        assertEquals((2 * COSTS.verifyNanos() + COSTS.signNanos() + COSTS.agreeNanos()) / 1e6,
+                ledger.millisByCategory(0).get(Category.HANDSHAKE), 1e-9,
+                "the held reply's check (credential and signature), then the first contact's signature and agreement");
     }
 }

@@ -95,4 +95,27 @@ class SetupTimeRunTest {
         assertTrue(report.toString().contains("team sent") && report.toString().contains("ROLE_ASSIGNMENT"), report::toString);
         assertTrue(!report.toString().contains("CAPABILITY_REQUEST"), report::toString);
     }
+
+    /**
+     * A manager reads the discovery replies it gets before checking them and checks (and contacts)
+     * only the vehicles it tries to seat: at 200 roles the managers held the replies of many more
+     * vehicles than they checked. (Checking every reply as it came, about 90 first
+     * contacts at 1,000 roles were 90 of a level-2 manager's 110 ms of CPU.)
+     */
+    @Test
+    void aManagerChecksOnlyTheRepliesOfTheVehiclesItTriesToSeat() throws Exception {
+        GeneratedMission g = MissionGenerator.write(TreeShape.of(200, 4), dir, Project.bootEvents());
+        Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
+        StringBuilder report = new StringBuilder();
+        SetupResult r = SetupTimeRun.run(g, mission, Scheme.DISTRIBUTED, 1, 42, RadioNetwork.ADHOC_80211, COSTS, 60_000,
+                report::append);
+        assertTrue(r.complete(), r::toString);
+        java.util.regex.Matcher m = java.util.regex.Pattern
+                .compile("team held unchecked (\\d+) datagrams and checked (\\d+) of them")
+                .matcher(report);
+        assertTrue(m.find(), report::toString);
+        int held = Integer.parseInt(m.group(1));
+        int checked = Integer.parseInt(m.group(2));
+        assertTrue(checked > 0 && 2 * checked < held, () -> held + " held, " + checked + " checked\n" + report);
+    }
 }

@@ -1,0 +1,135 @@
+package net.smc.core.cell;
+
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Predicate;
+import java.util.stream.Stream;
+
+import net.smc.core.capability.CapabilitySummary;
+import net.smc.core.cell.TeamState.Heard;
+import net.smc.core.transport.Cancellable;
+
+/**
+ * The discovery replies a manager's policies decide on together, in the manager's order among its
+ * siblings ({@link SiblingOrder}) rather than in the order they came: the replies of one burst (those
+ * queued for the cell as the first of them was taken up), those that came while the manager's own
+ * role was loading, and those heard lately when a seat opens again. Siblings hear the same vehicles
+ * answer in much the same order; decided on one by one as they came, each sibling gave its seat to
+ * the quickest, which took one and refused the others. Part of {@link Recruiter}.
+ */
+final class ReplyBatches {
+    /** Table I and Algorithm 2 on one vehicle that answered with {@code summary} ({@link Recruiter}). */
+    interface Decision {
+        void decide(String vehicle, CapabilitySummary summary, long nowMillis);
+    }
+
+    private final TeamContext ctx;
+    private final TeamState st;
+    private final Decision decision;
+    /** Checks a vehicle's reply held unchecked, if one is; whether its reply is checked and heard (Recruiter.check). */
+    private final Predicate<String> check;
+    /** The vehicles whose replies came in the burst being taken up; decided on after it. */
+    private final Set<String> burst = new LinkedHashSet<>();
+    /** The task that decides on {@link #burst}, or null when none is due. */
+    private Cancellable burstDue;
+
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Predicate<String> check) {
+        this.ctx = ctx;
+        this.st = st;
+        this.decision = decision;
+        this.check = check;
+    }
+
+    /**
+     * {@code vehicle}'s reply came: it is decided on, with the others of its burst, by a task that
+     * runs after the datagrams already queued for the cell (delay 0), so a burst costs no wait.
+     */
+    void add(String vehicle) {
+        burst.add(vehicle);
+        if (burstDue == null) {
+            burstDue = ctx.scheduler().schedule(0, this::decideOnBurst);
+        }
+    }
+
+    private void decideOnBurst() {
+        burstDue = null;
+        List<String> vehicles = List.copyOf(burst);
+        burst.clear();
+        decideOn(vehicles, ctx.clock().nowMillis());
+    }
+
+    /**
+     * The role this cell was taking has started: its policies decide on the vehicles that answered
+     * the discovery it sent when the assignment arrived (Assignee), as on any discovery reply; on
+     * those that answered within a heartbeat period, as an older answer may no longer hold (the
+     * vehicle has taken a role since), and a fresh discovery costs less than an assignment refused.
+     */
+    void takeUpEarly() {
+        long now = ctx.clock().nowMillis();
+        List<String> early = st.earlyReplies.stream()
+                .filter(v -> now - answeredMillis(v, now) <= ctx.timing().comTimeoutMillis()).toList();
+        st.earlyReplies.clear();
+        decideOn(early, now);
+    }
+
+    /**
+     * Puts the vehicles that answered this cell's discovery within the first retransmission
+     * timeout of the critical messages, and are neither its children nor being given a seat, to the
+     * policies again, while a seat is open: managers of the same role hear the same free vehicles,
+     * and the one that lost a vehicle to another need not discover again (a round trip) to find the
+     * others that answered it. A vehicle that turns out taken refuses, and is forgotten
+     * (Recruiter.assignmentFailed).
+     */
+    void decideOnHeard() {
+        long now = ctx.clock().nowMillis();
+        long window = ctx.timing().senderSettings().initialTimeoutMillis();
+        List<String> recent = Stream.concat(st.heard.keySet().stream(), st.unchecked.keySet().stream()).distinct()
+                .filter(v -> now - answeredMillis(v, now) <= window)
+                .filter(v -> st.owned.values().stream().noneMatch(o -> v.equals(o.pendingFor))).toList();
+        decideOn(recent, now);
+    }
+
+    /** When {@code vehicle} last answered (its reply held unchecked, or checked); long ago when it did not. */
+    private long answeredMillis(String vehicle, long now) {
+        TeamState.Unchecked u = st.unchecked.get(vehicle);
+        Heard h = st.heard.get(vehicle);
+        long at = Math.max(u == null ? Long.MIN_VALUE : u.atMillis(), h == null ? Long.MIN_VALUE : h.atMillis());
+        return at == Long.MIN_VALUE ? now - Long.MAX_VALUE / 2 : at;
+    }
+
+    /**
+     * Decides on {@code vehicles} in this manager's order while a seat is open; a vehicle whose reply
+     * is held unchecked is checked first, and skipped if it fails: so only as many replies are
+     * checked (and as many first contacts made) as it takes to fill the open seats.
+     */
+    private void decideOn(List<String> vehicles, long now) {
+        for (String vehicle : siblingOrder(vehicles)) {
+            if (!st.hasVacancy()) {
+                return;
+            }
+            if (!check.test(vehicle)) {
+                continue;
+            }
+            Heard heard = st.heard.get(vehicle);
+            if (heard != null) {
+                decision.decide(vehicle, heard.summary(), now);
+            }
+        }
+    }
+
+    /** {@code vehicles} in this manager's order among the managers of its role ({@link SiblingOrder}). */
+    private List<String> siblingOrder(List<String> vehicles) {
+        return st.owned.keySet().stream().filter(st::open).min(ctx.slots()::compare)
+                .map(seat -> SiblingOrder.of(vehicles, seat, ctx.slots())).orElse(vehicles);
+    }
+
+    /** The cell stops: replies not yet decided on are dropped. */
+    void stop() {
+        if (burstDue != null) {
+            burstDue.cancel();
+            burstDue = null;
+        }
+        burst.clear();
+    }
+}

@@ -1,0 +1,66 @@
+package net.smc.core.cell;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+
+/**
+ * The order in which a manager puts several free vehicles that answered its discovery to its
+ * policies, so that the managers of one role (siblings: they own the seats of the same roles below,
+ * slot by slot, {@link Slots#owner}) begin with different vehicles.
+ *
+ * <p>Siblings hear the same free vehicles answer, in much the same order. Taken in that order,
+ * every sibling began with the same vehicle, the quickest to answer: it took the first assignment to
+ * reach it and refused the others, each refusal a round trip (and the policy files sent behind the
+ * assignment) for nothing, and a lost refusal a retransmission timeout. Without a word between them,
+ * the siblings agree on where each vehicle lies on a ring (a hash of its id, the same in every cell)
+ * and each has its own share of the ring: the manager of sibling seat {@code i} of {@code M} the
+ * share that begins at {@code i/M} of the way round. Each takes the vehicles in ring order from the
+ * start of its share: first those in its own share, which no sibling begins with, then the next
+ * share's. However many of the vehicles a manager heard (a vehicle taken stops answering), two
+ * siblings begin with the same one only when no vehicle either heard lies in the share between them.
+ * The policies still decide on every vehicle; only the order in which they are asked changes.
+ */
+final class SiblingOrder {
+    private SiblingOrder() {
+    }
+
+    /**
+     * {@code vehicles} in the order the manager owning {@code openSeat} puts them to its policies.
+     *
+     * @param openSeat the manager's most important open seat: its owner is the manager's place among its siblings
+     */
+    static List<String> of(Collection<String> vehicles, Seat openSeat, Slots slots) {
+        long start = slots.owner(openSeat).map(manager -> startOf(manager.slot(), slots.optimal(manager.role()))).orElse(Long.MIN_VALUE);
+        List<String> ordered = new ArrayList<>(vehicles);
+        ordered.sort((a, b) -> {
+            int c = Long.compareUnsigned(key(a) - start, key(b) - start);
+            return c != 0 ? c : a.compareTo(b);
+        });
+        return ordered;
+    }
+
+    /** Where the manager of sibling seat {@code slot} of {@code siblings} begins on the ring of keys: its own share's start. */
+    static long startOf(int slot, int siblings) {
+        long share = Long.divideUnsigned(-1L, Math.max(1, siblings));
+        return Long.MIN_VALUE + share * slot;
+    }
+
+    /** The place of {@code vehicle} on the ring every cell agrees on: FNV-1a (64 bits) of its id's UTF-8 bytes, mixed. */
+    static long key(String vehicle) {
+        long h = 0xcbf29ce484222325L;
+        for (byte b : vehicle.getBytes(StandardCharsets.UTF_8)) {
+            h ^= b & 0xFF;
+            h *= 0x100000001b3L;
+        }
+        // Ids that differ only in their last characters differ only in a few bits of FNV-1a: mix
+        // them over all 64 bits (the finaliser of MurmurHash3), so that they spread round the ring.
+        h ^= h >>> 33;
+        h *= 0xff51afd7ed558ccdL;
+        h ^= h >>> 33;
+        h *= 0xc4ceb9fe1a85ec53L;
+        h ^= h >>> 33;
+        return h;
+    }
+}
