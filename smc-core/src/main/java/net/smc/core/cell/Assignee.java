@@ -47,6 +47,12 @@ final class Assignee {
     private final Merge merge;
     /** Whether this vehicle could hold a role managed by a manager of the role (the key): see couldHoldAny. */
     private final Map<String, Boolean> couldHold = new HashMap<>();
+    /**
+     * For a manager's role (the key), the best (lowest) rank of a role it manages that this vehicle
+     * is able to hold, {@link Integer#MAX_VALUE} if none: see promotable. Fixed for the cell's life,
+     * like {@link #couldHold}; every cell weighs the commander's beacon, every two seconds.
+     */
+    private final Map<String, Integer> bestHoldableRank = new HashMap<>();
     /** Run when this cell has taken a role: a manager starts discovering its children at once. */
     private final Runnable roleTaken;
     /** The assignment being taken whose missing own files this cell has asked for (expire), or null. */
@@ -93,8 +99,7 @@ final class Assignee {
         if (st.acting && d.role().equals(Mission.COMMANDER)) {
             return false; // a rival commander's beacon: the merge meets it
         }
-        boolean promotable = st.parent != null && !st.parent.vehicle().equals(sender)
-                && ctx.slots().managedRoles(d.role()).stream().anyMatch(r -> promotion(r, d.epoch()));
+        boolean promotable = st.parent != null && !st.parent.vehicle().equals(sender) && promotable(d.role(), d.epoch());
         if ((!st.free() || st.left) && !promotable) {
             return true; // Algorithm 1, line 9: a vehicle with a parent ignores discovery (unless it could move up)
         }
@@ -369,6 +374,28 @@ final class Assignee {
         }
         String mine = st.seats.get(0).role();
         return ctx.slots().rank(role) < ctx.slots().rank(mine) && ctx.slots().role(role).requirement().isMetBy(ctx.description());
+    }
+
+    /**
+     * Whether {@link #promotion} holds for one of the roles a manager of {@code managerRole} manages:
+     * the same answer, from the best rank among them this vehicle is able to hold, asked of the
+     * mission once per manager's role.
+     */
+    private boolean promotable(String managerRole, long offeredEpoch) {
+        if (st.parent == null || st.suspended() || st.seats.isEmpty() || st.acting || offeredEpoch != st.epoch) {
+            return false;
+        }
+        int best = bestHoldableRank.computeIfAbsent(managerRole, m -> {
+            int r = Integer.MAX_VALUE;
+            for (String role : ctx.slots().managedRoles(m)) {
+                if (ctx.slots().mission().role(role).isPresent() && !role.equals(Mission.COMMANDER)
+                        && ctx.slots().role(role).requirement().isMetBy(ctx.description())) {
+                    r = Math.min(r, ctx.slots().rank(role));
+                }
+            }
+            return r;
+        });
+        return best < ctx.slots().rank(st.seats.get(0).role());
     }
 
     /** Whether {@code seat} is owned by another of {@code held}: a secondary seat this vehicle hosts itself. */

@@ -228,8 +228,8 @@ final class TeamProtocol implements DiscoveryActions {
     }
 
     /**
-     * Whether this cell would do nothing, now, with the message in {@code datagram} (one datagram as
-     * the Communication-Manager decodes it) whoever really sent it: a discovery it would not answer
+     * Whether this cell would do nothing, now, with the message in {@code data[offset, offset + length)}
+     * (one datagram as the Communication-Manager decodes it, read in place) whoever really sent it: a discovery it would not answer
      * ({@link Assignee#ignores}: the vehicle has a parent, or could hold no role that manager
      * manages). In a large team every cell hears every manager's discovery and answers few of them;
      * checking the signature of each (an Ed25519 verification, and the sender's credential the first
@@ -241,23 +241,23 @@ final class TeamProtocol implements DiscoveryActions {
      * only by the same test {@link Assignee#onDiscovery} applies, and never a fragment or anything
      * that does not decode.
      */
-    boolean ignoresUnverified(byte[] datagram) {
-        if (datagram.length <= TYPE_AT || (datagram[TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
+    boolean ignoresUnverified(byte[] data, int offset, int length) {
+        if (length <= TYPE_AT || (data[offset + TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
             return false;
         }
-        return peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
+        return peek.decode(data, offset, length) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
                 && assignee.ignores(d.envelope().sender(), discovery);
     }
 
     /**
-     * Whether the authenticating transport should hold {@code datagram} unchecked for this cell to
-     * read first ({@code AuthenticatingTransport.holdUnverified}): a discovery reply (not a fragment
+     * Whether the authenticating transport should hold the payload {@code data[offset, offset + length)}
+     * (read in place) unchecked for this cell to read first ({@code AuthenticatingTransport.holdUnverified}): a discovery reply (not a fragment
      * of one). A manager reads the answers to its discovery to choose whom to contact, and checks (a
      * credential verification, then a key agreement as it contacts the vehicle) only those it tries
      * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
      */
-    boolean readsUnverified(byte[] datagram) {
-        return datagram.length > TYPE_AT && (datagram[TYPE_AT] & 0xFF) == MessageType.DISCOVERY_REPLY.code();
+    boolean readsUnverified(byte[] data, int offset, int length) {
+        return length > TYPE_AT && (data[offset + TYPE_AT] & 0xFF) == MessageType.DISCOVERY_REPLY.code();
     }
 
     /** A payload held unchecked ({@link #readsUnverified}) from {@code from}: who claims to answer, for the recruiter's choice. */

@@ -1,7 +1,6 @@
 package net.smc.core.security;
 
 import java.util.Optional;
-import java.util.function.Predicate;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Transport;
@@ -35,9 +34,9 @@ public interface AuthenticatingTransport extends Transport {
      * sender gains anything by it. The test must not answer {@code true} for a payload the receiver
      * acts on, and sees the payload's bytes only, not the checked sender. Payloads under a session or
      * the team key are checked by a MAC, which costs about as little as the test, and need not be
-     * offered to it. None by default: every payload is checked.
+     * offered to it. None by default ({@link UnverifiedTest#NONE}): every payload is checked.
      */
-    void setUnverifiedFilter(Predicate<byte[]> ignorable);
+    void setUnverifiedFilter(UnverifiedTest ignorable);
 
     /**
      * Holds the signed datagrams whose payload {@code readable} accepts, unchecked, and hands their
@@ -49,7 +48,7 @@ public interface AuthenticatingTransport extends Transport {
      * all (the oldest goes first). Payloads under a session or the team key are checked by a MAC and
      * delivered as usual. None by default: every payload is checked as it comes.
      */
-    void holdUnverified(Predicate<byte[]> readable, UnverifiedReceiver receiver);
+    void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver);
 
     /**
      * Checks the datagram held from {@code from} now, as if it had just arrived: when it passes every

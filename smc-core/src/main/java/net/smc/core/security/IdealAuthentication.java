@@ -14,7 +14,6 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.WeakHashMap;
 import java.util.function.BiConsumer;
-import java.util.function.Predicate;
 
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Clock;
@@ -276,8 +275,8 @@ public final class IdealAuthentication {
         /** This address's record (its seal counter is shared with its later incarnations). */
         private final Peer self;
         private AuthenticatedReceiver receiver;
-        private Predicate<byte[]> unverifiedFilter = payload -> false;
-        private Predicate<byte[]> heldFilter = payload -> false;
+        private UnverifiedTest unverifiedFilter = UnverifiedTest.NONE;
+        private UnverifiedTest heldFilter = UnverifiedTest.NONE;
         private UnverifiedReceiver heldReceiver;
         /** The datagrams held unchecked, the newest per source address, oldest first. */
         private final Map<Address, byte[]> held = new LinkedHashMap<>();
@@ -326,7 +325,7 @@ public final class IdealAuthentication {
          * {@code receiver}, and checked when {@link #checkHeld} asks.
          */
         @Override
-        public void holdUnverified(Predicate<byte[]> readable, UnverifiedReceiver receiver) {
+        public void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver) {
             this.heldFilter = Objects.requireNonNull(readable, "readable");
             this.heldReceiver = Objects.requireNonNull(receiver, "receiver");
         }
@@ -345,7 +344,7 @@ public final class IdealAuthentication {
         /** Whether {@code data} (sealed) carries a payload the receiver reads before it is checked. */
         boolean holdable(byte[] data) {
             return heldReceiver != null && data.length >= SEAL_BYTES
-                    && heldFilter.test(Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+                    && heldFilter.test(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
         }
 
         /** What the check of this endpoint's own credential found. */
@@ -378,14 +377,14 @@ public final class IdealAuthentication {
          * signature verification), and counted ({@link #ignoredUnverified()}).
          */
         @Override
-        public void setUnverifiedFilter(Predicate<byte[]> ignorable) {
+        public void setUnverifiedFilter(UnverifiedTest ignorable) {
             this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
         }
 
         /** Whether {@code data} (sealed) carries a payload the receiver would ignore: read, not checked. */
         boolean ignorable(byte[] data) {
             return data.length >= SEAL_BYTES
-                    && unverifiedFilter.test(Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+                    && unverifiedFilter.test(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
         }
 
         private void onDatagram(Address from, byte[] data) {

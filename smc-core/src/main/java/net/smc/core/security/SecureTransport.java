@@ -6,7 +6,6 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.function.Predicate;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.Receiver;
 import net.smc.core.transport.Transport;
@@ -52,8 +51,8 @@ public final class SecureTransport implements AuthenticatingTransport {
     private final Map<String, Address> addressOf = new HashMap<>();
     private final SignatureBudget budget = new SignatureBudget(SignatureBudget.PER_SOURCE_PER_SECOND, SignatureBudget.TOTAL_PER_SECOND);
     private AuthenticatedReceiver receiver;
-    private Predicate<byte[]> unverifiedFilter = payload -> false;
-    private Predicate<byte[]> heldFilter = payload -> false;
+    private UnverifiedTest unverifiedFilter = UnverifiedTest.NONE;
+    private UnverifiedTest heldFilter = UnverifiedTest.NONE;
     private UnverifiedReceiver heldReceiver;
     /** The signed datagrams held unchecked, the newest per source address, oldest first. */
     private final Map<Address, byte[]> held = new LinkedHashMap<>();
@@ -193,12 +192,12 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     @Override
-    public void setUnverifiedFilter(Predicate<byte[]> ignorable) {
+    public void setUnverifiedFilter(UnverifiedTest ignorable) {
         this.unverifiedFilter = Objects.requireNonNull(ignorable, "ignorable");
     }
 
     @Override
-    public void holdUnverified(Predicate<byte[]> readable, UnverifiedReceiver receiver) {
+    public void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver) {
         this.heldFilter = Objects.requireNonNull(readable, "readable");
         this.heldReceiver = Objects.requireNonNull(receiver, "receiver");
     }
@@ -297,7 +296,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     private boolean ignorable(byte[] data) {
         try {
             return FrameCodec.read(data) instanceof Frame.Signed s
-                    && unverifiedFilter.test(Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()));
+                    && unverifiedFilter.test(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart());
         } catch (Malformed m) {
             return false; // refused and counted by the endpoint
         }
@@ -307,8 +306,8 @@ public final class SecureTransport implements AuthenticatingTransport {
     private byte[] heldPayload(byte[] data) {
         try {
             if (FrameCodec.read(data) instanceof Frame.Signed s) {
-                byte[] payload = Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength());
-                return heldFilter.test(payload) ? payload : null;
+                return heldFilter.test(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart())
+                        ? Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()) : null;
             }
             return null;
         } catch (Malformed m) {

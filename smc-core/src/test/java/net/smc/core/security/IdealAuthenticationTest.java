@@ -62,7 +62,7 @@ class IdealAuthenticationTest {
 
     @Test
     void aPayloadTheReceiverWouldIgnore_isDroppedBeforeItsChecks_andTheCpuModelCanAskSo() {
-        endpointB.setUnverifiedFilter(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("IGNORED"));
+        endpointB.setUnverifiedFilter((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("IGNORED"));
         endpointA.broadcast("IGNORED discovery".getBytes(StandardCharsets.UTF_8));
         sendAndDeliver("answered");
         assertEquals(List.of("uav-a:answered"), heardByB);
@@ -79,7 +79,7 @@ class IdealAuthenticationTest {
         List<String> read = new ArrayList<>();
         List<String> checks = new ArrayList<>();
         ideal.onHeldChecked((at, from) -> checks.add(at + "<" + from));
-        endpointB.holdUnverified(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("REPLY"),
+        endpointB.holdUnverified((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("REPLY"),
                 (from, payload) -> read.add(from + " " + new String(payload, StandardCharsets.UTF_8)));
         endpointA.sendWithoutHandshake(b, "REPLY of uav-a".getBytes(StandardCharsets.UTF_8));
         sendAndDeliver("other");

@@ -191,7 +191,7 @@ class SecureTransportTest {
         Cell vehicle = new Cell("uav-1", 4002);
         commander.transport.broadcast(bytes("DISCOVERY"));
         settle();
-        vehicle.transport.setUnverifiedFilter(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("IGNORED"));
+        vehicle.transport.setUnverifiedFilter((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("IGNORED"));
         byte[] forged = commander.transport.endpoint().wrapSigned(bytes("IGNORED but forged"));
         forged[forged.length - 1] ^= 1;
         Transport attacker = network.attach(Address.loopback(4666));
@@ -220,7 +220,7 @@ class SecureTransportTest {
         Cell commander = new Cell("cmdr", 4001);
         Cell vehicle = new Cell("uav-1", 4002);
         List<String> read = new ArrayList<>();
-        commander.transport.holdUnverified(payload -> new String(payload, StandardCharsets.UTF_8).startsWith("REPLY"),
+        commander.transport.holdUnverified((data, offset, length) -> new String(data, offset, length, StandardCharsets.UTF_8).startsWith("REPLY"),
                 (from, payload) -> read.add(from + " " + new String(payload, StandardCharsets.UTF_8)));
         commander.transport.broadcast(bytes("DISCOVER (answered by hand)"));
         settle();

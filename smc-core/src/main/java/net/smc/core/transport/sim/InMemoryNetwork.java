@@ -122,7 +122,8 @@ public final class InMemoryNetwork {
     public void inject(Address from, Address to, byte[] data, long delayMillis) {
         Objects.requireNonNull(from, "from");
         Objects.requireNonNull(to, "to");
-        scheduler.schedule(Math.max(0, delayMillis), () -> arrive(from, to, data.clone()));
+        byte[] copy = data.clone();
+        scheduler.schedule(Math.max(0, delayMillis), () -> arrive(from, to, copy, true));
     }
 
     /** Cuts every link between a node of {@code sideA} and a node of {@code sideB}, both ways, until {@link #heal()}. */
@@ -215,11 +216,13 @@ public final class InMemoryNetwork {
 
     void send(SimTransport sender, Address to, byte[] data) {
         sender.counters.sent++;
+        observeSent(sender, to, data);
         route(sender, to, data, departureDelay(sender, to, data), false);
     }
 
     void broadcast(SimTransport sender, byte[] data) {
         sender.counters.sent++;
+        observeSent(sender, null, data);
         long delay = departureDelay(sender, null, data);
         if (broadcastOrder == null) {
             broadcastOrder = attached.keySet().toArray(new Address[0]);
@@ -228,6 +231,14 @@ public final class InMemoryNetwork {
         for (Address to : broadcastOrder) {   // route never attaches or detaches
             if (!to.equals(self)) {
                 route(sender, to, data, delay, true);
+            }
+        }
+    }
+
+    private void observeSent(SimTransport sender, Address to, byte[] data) {
+        if (!sender.isCrashed()) {
+            for (NetworkObserver o : observers) {
+                o.sent(scheduler.nowMillis(), sender.localAddress(), to, data);
             }
         }
     }
@@ -274,17 +285,22 @@ public final class InMemoryNetwork {
             drop(from, to, DropReason.LOSS, data, to);
             return;
         }
-        scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast);
-        if (links.duplicated(profile)) {
+        long delay = links.delayMillis(profile);
+        boolean duplicated = links.duplicated(profile);   // drawn after the first copy's delay, as always
+        // A unicast's bytes are the network's own (the sender's transport copied them): its one copy
+        // takes them. A broadcast's are shared by every copy, and a duplicate's by two.
+        scheduleArrival(from, to, data, departureMillis + delay, broadcast, !broadcast && !duplicated);
+        if (duplicated) {
             sender.counters.copies++;
             countersOf(to).duplicated++;
-            scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast);
+            scheduleArrival(from, to, data, departureMillis + links.delayMillis(profile), broadcast, false);
         }
     }
 
-    private void scheduleArrival(Address from, Address to, byte[] data, long delayMillis, boolean broadcast) {
+    /** @param owned whether the copy may hand {@code data} itself to its receiver (no other copy shares it) */
+    private void scheduleArrival(Address from, Address to, byte[] data, long delayMillis, boolean broadcast, boolean owned) {
         if (cpu == null) {
-            scheduler.schedule(delayMillis, () -> arrive(from, to, data));
+            scheduler.schedule(delayMillis, () -> arrive(from, to, data, owned));
         } else {
             scheduler.schedule(delayMillis, () -> queue(from, to, data, broadcast));
         }
@@ -310,7 +326,7 @@ public final class InMemoryNetwork {
         NodeCpu.Waiting w = node.inbox.pollFirst();
         long done = node.charge(w.arrivedMicros(), cpu.receiveMicros(at, w.from(), w.data(), w.broadcast()));
         scheduler.schedule(untilMillis(done), () -> {
-            arrive(w.from(), at, w.data());
+            arrive(w.from(), at, w.data(), false);
             if (node.inbox.isEmpty()) {
                 node.draining = false;
             } else {
@@ -332,7 +348,8 @@ public final class InMemoryNetwork {
         return Math.floorDiv(micros, 1_000);
     }
 
-    private void arrive(Address from, Address to, byte[] data) {
+    /** @param owned whether {@code data} is this copy's alone, to hand over as it is; else the receiver gets a copy */
+    private void arrive(Address from, Address to, byte[] data, boolean owned) {
         SimTransport destination = attachedByHash.get(to);
         if (destination == null) {
             drop(from, to, DropReason.RECEIVER_DOWN, data, to);
@@ -340,7 +357,7 @@ public final class InMemoryNetwork {
             drop(from, to, DropReason.NO_RECEIVER, data, to);
         } else {
             destination.counters.delivered++;
-            byte[] copy = data.clone();   // each copy is the receiver's own to keep or change
+            byte[] copy = owned ? data : data.clone();   // each copy is the receiver's own to keep or change
             for (NetworkObserver o : observers) {
                 o.delivered(scheduler.nowMillis(), from, to, copy);
             }

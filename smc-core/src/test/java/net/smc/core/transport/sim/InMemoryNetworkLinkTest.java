@@ -178,6 +178,31 @@ class InMemoryNetworkLinkTest {
         assertTrue(got.get(0) != got.get(1));
     }
 
+    @Test
+    void receiversThatChangeTheirArrays_leaveEveryOtherCopyAsSent() {
+        sim.network.setDefaultLink(LinkProfile.DEFAULT.withDuplication(0.5));
+        SimFixture.Node a = sim.node(1);
+        List<String> seen = new ArrayList<>();
+        for (int port = 2; port <= 4; port++) {
+            int at = port;
+            sim.network.attach(net.smc.core.transport.Address.loopback(port)).setReceiver((from, data) -> {
+                seen.add(at + ":" + (char) data[0]);
+                data[0] = 'Z';
+            });
+        }
+        byte[] sent = {'a'};
+
+        for (int i = 0; i < 20; i++) {
+            a.transport.send(net.smc.core.transport.Address.loopback(2), sent);
+            a.transport.broadcast(sent);
+        }
+        sent[0] = 'Z';   // the sender's array is its own again once send returns
+        sim.runUntilIdle();
+
+        assertTrue(seen.size() > 80, seen.size() + " copies; some of them duplicates");
+        assertTrue(seen.stream().allMatch(s -> s.endsWith(":a")), seen.toString());
+    }
+
     private static List<Integer> sorted(List<Integer> list) {
         return list.stream().sorted().toList();
     }

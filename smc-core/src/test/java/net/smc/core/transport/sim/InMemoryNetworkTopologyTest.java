@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 
@@ -34,6 +35,36 @@ class InMemoryNetworkTopologyTest {
         assertTrue(b.received.isEmpty());
         assertEquals(1, a.received.size());
         assertEquals(1, c.received.size());
+    }
+
+    @Test
+    void sentObserver_seesEachDatagramOfALiveSenderOnce_aBroadcastWithNoDestination() {
+        sim.network.setDefaultLink(LinkProfile.fixed(0));
+        SimFixture.Node a = sim.node(1);
+        SimFixture.Node b = sim.node(2);
+        SimFixture.Node c = sim.node(3);
+        List<String> sent = new ArrayList<>();
+        sim.network.addObserver(new NetworkObserver() {
+            @Override
+            public void sent(long atMillis, Address from, Address to, byte[] data) {
+                sent.add(atMillis + " " + from.port() + " -> " + (to == null ? "all" : to.port()) + " " + new String(data, UTF_8));
+            }
+        });
+
+        a.send(b, "one");
+        b.broadcast("two");
+        sim.network.partition(Set.of(a.address()), Set.of(c.address()));
+        a.send(c, "cut");   // sent, then dropped by the partition
+        sim.network.crash(c.address());
+        c.send(a, "from the dead");
+        sim.runUntilIdle();
+
+        assertEquals(List.of("0 1 -> 2 one", "0 2 -> all two", "0 1 -> 3 cut"), sent);
+        assertEquals(List.of("0 drop PARTITION 127.0.0.1:1 -> 127.0.0.1:3 cut",
+                "0 drop SENDER_DOWN 127.0.0.1:3 -> 127.0.0.1:1 from the dead",
+                "0 deliver 127.0.0.1:1 -> 127.0.0.1:2 one",
+                "0 deliver 127.0.0.1:2 -> 127.0.0.1:1 two",
+                "0 drop RECEIVER_DOWN 127.0.0.1:2 -> 127.0.0.1:3 two"), sim.trace);
     }
 
     @Test
