@@ -7,7 +7,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -263,8 +262,6 @@ public final class IdealAuthentication {
     public static final int PAYLOAD_OFFSET = 8;
     private static final long FRESHNESS_MILLIS = SecuritySettings.DEFAULTS.freshnessWindowMillis();
     private static final int REPLAY_WINDOW = SecuritySettings.DEFAULTS.replayWindow();
-    /** At most this many datagrams an endpoint holds unchecked, as {@code SecureTransport.MAX_HELD}. */
-    private static final int MAX_HELD = SecureTransport.MAX_HELD;
 
     /** One vehicle's endpoint: delivers only what vouched-for vehicles sent. */
     public final class Endpoint extends ForwardingTransport implements AuthenticatingTransport {
@@ -276,10 +273,8 @@ public final class IdealAuthentication {
         private final Peer self;
         private AuthenticatedReceiver receiver;
         private UnverifiedTest unverifiedFilter = UnverifiedTest.NONE;
-        private UnverifiedTest heldFilter = UnverifiedTest.NONE;
-        private UnverifiedReceiver heldReceiver;
-        /** The datagrams held unchecked, the newest per source address, oldest first. */
-        private final Map<Address, byte[]> held = new LinkedHashMap<>();
+        /** The datagrams held unchecked ({@link #holdUnverified}). */
+        private final HeldDatagrams held = new HeldDatagrams();
         /** The address this endpoint last sent a unicast to, and its record (a record is never replaced). */
         private Address lastTo;
         private Peer lastToPeer;
@@ -326,13 +321,12 @@ public final class IdealAuthentication {
          */
         @Override
         public void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver) {
-            this.heldFilter = Objects.requireNonNull(readable, "readable");
-            this.heldReceiver = Objects.requireNonNull(receiver, "receiver");
+            held.set(readable, receiver);
         }
 
         @Override
         public boolean checkHeld(Address from) {
-            byte[] data = held.remove(Objects.requireNonNull(from, "from"));
+            byte[] data = held.take(from);
             if (data == null) {
                 return false;
             }
@@ -343,8 +337,7 @@ public final class IdealAuthentication {
 
         /** Whether {@code data} (sealed) carries a payload the receiver reads before it is checked. */
         boolean holdable(byte[] data) {
-            return heldReceiver != null && data.length >= SEAL_BYTES
-                    && heldFilter.test(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
+            return data.length >= SEAL_BYTES && held.accepts(data, PAYLOAD_OFFSET, data.length - SEAL_BYTES);
         }
 
         /** What the check of this endpoint's own credential found. */
@@ -393,13 +386,8 @@ public final class IdealAuthentication {
                 return;
             }
             if (holdable(data)) {
-                held.remove(from);
-                if (held.size() >= MAX_HELD) {
-                    held.remove(held.keySet().iterator().next());
-                }
-                held.put(from, data);
                 heldUnverified++;
-                heldReceiver.onUnverified(from, Arrays.copyOfRange(data, PAYLOAD_OFFSET, data.length - 8));
+                held.hold(from, data, Arrays.copyOfRange(data, PAYLOAD_OFFSET, PAYLOAD_OFFSET + data.length - SEAL_BYTES));
                 return;
             }
             check(from, data);

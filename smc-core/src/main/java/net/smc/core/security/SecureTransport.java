@@ -2,7 +2,6 @@ package net.smc.core.security;
 
 import java.util.Arrays;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
@@ -41,8 +40,6 @@ import org.slf4j.LoggerFactory;
  */
 public final class SecureTransport implements AuthenticatingTransport {
     static final int PROBES_PER_RETRY = 16;
-    /** At most this many datagrams are held unchecked ({@link #holdUnverified}); the oldest goes first. */
-    static final int MAX_HELD = 256;
     private static final Logger LOG = LoggerFactory.getLogger(SecureTransport.class);
 
     private final Transport inner;
@@ -52,11 +49,8 @@ public final class SecureTransport implements AuthenticatingTransport {
     private final SignatureBudget budget = new SignatureBudget(SignatureBudget.PER_SOURCE_PER_SECOND, SignatureBudget.TOTAL_PER_SECOND);
     private AuthenticatedReceiver receiver;
     private UnverifiedTest unverifiedFilter = UnverifiedTest.NONE;
-    private UnverifiedTest heldFilter = UnverifiedTest.NONE;
-    private UnverifiedReceiver heldReceiver;
-    /** The signed datagrams held unchecked, the newest per source address, oldest first. */
-    private final Map<Address, byte[]> held = new LinkedHashMap<>();
-    private long heldUnverified;
+    /** The signed datagrams held unchecked ({@link #holdUnverified}). */
+    private final HeldDatagrams held = new HeldDatagrams();
     private long droppedNoReceiver;
     private long droppedUnverified;
     private long droppedOverBudget;
@@ -198,13 +192,12 @@ public final class SecureTransport implements AuthenticatingTransport {
 
     @Override
     public void holdUnverified(UnverifiedTest readable, UnverifiedReceiver receiver) {
-        this.heldFilter = Objects.requireNonNull(readable, "readable");
-        this.heldReceiver = Objects.requireNonNull(receiver, "receiver");
+        held.set(readable, receiver);
     }
 
     @Override
     public boolean checkHeld(Address from) {
-        byte[] data = held.remove(Objects.requireNonNull(from, "from"));
+        byte[] data = held.take(from);
         if (data == null) {
             return false;
         }
@@ -214,7 +207,7 @@ public final class SecureTransport implements AuthenticatingTransport {
 
     /** Signed datagrams held unchecked for the receiver to read first ({@link #holdUnverified}). */
     public long heldUnverified() {
-        return heldUnverified;
+        return held.count();
     }
 
     /** Signed datagrams dropped unchecked because the receiver would have ignored their payload. */
@@ -251,15 +244,9 @@ public final class SecureTransport implements AuthenticatingTransport {
             droppedUnverified++;
             return;
         }
-        byte[] readable = isSessionTraffic(data) || heldReceiver == null ? null : heldPayload(data);
+        byte[] readable = isSessionTraffic(data) ? null : heldPayload(data);
         if (readable != null) {
-            held.remove(from);
-            if (held.size() >= MAX_HELD) {
-                held.remove(held.keySet().iterator().next());
-            }
-            held.put(from, data);
-            heldUnverified++;
-            heldReceiver.onUnverified(from, readable);
+            held.hold(from, data, readable);
             return;
         }
         check(from, data);
@@ -306,7 +293,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     private byte[] heldPayload(byte[] data) {
         try {
             if (FrameCodec.read(data) instanceof Frame.Signed s) {
-                return heldFilter.test(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart())
+                return held.accepts(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart())
                         ? Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()) : null;
             }
             return null;
