@@ -39,7 +39,10 @@ import net.smc.sim.map.Zone;
  * passing beside it have freed it since. Told where a failed teammate's body lies
  * ({@link #pushAside}), it plans with that body's cells taken for free and pushes the body aside
  * when it is in the way (the path follower drives on slowly into it): a robot that died in a
- * doorway would otherwise seal the rooms behind it.
+ * doorway would otherwise seal the rooms behind it. A target is given up when the robot, driving,
+ * stays within 5 cm for {@link #STALL_SECONDS} or within {@link #CREEP_MOVED} for
+ * {@link #CREEP_SECONDS}: the second tells a robot pushing into a body that does not give, whose
+ * position jitters by a few centimetres.
  */
 public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final double REPORT_STEP = 0.1;
@@ -47,6 +50,14 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private static final int[][] FOUR_NEIGHBOURS = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     /** Seconds of driving without moving 5 cm after which the target is given up. */
     private static final double STALL_SECONDS = 4;
+    /**
+     * Seconds of driving without getting {@link #CREEP_MOVED} from where it was after which the
+     * target is given up: a robot pushing into something that does not give (a body against a jamb,
+     * say) creeps by a few centimetres at a time, which the {@link #STALL_SECONDS} watch takes for moves.
+     */
+    static final double CREEP_SECONDS = 15;
+    /** Less than this, in metres, is no progress for the {@link #CREEP_SECONDS} watch. */
+    static final double CREEP_MOVED = 0.3;
     /** Metres kept between the robot's centre and an occupied cell's centre when planning. */
     static final double CLEARANCE = 0.36;
     /** How often something in the way may stop the robot on its way to one frontier before it gives that frontier up. */
@@ -87,6 +98,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private double backOffUntil = -1;
     private int sharedKnown = -1;
     private final StallWatch stall = new StallWatch(STALL_SECONDS);
+    private final StallWatch creep = new StallWatch(CREEP_SECONDS, CREEP_MOVED);
     private int obstructed;
     private double now;
     private double nearSince = Double.NaN;
@@ -113,6 +125,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     public void explore() {
         exploring = true;
         target = -1;
+        creep.reset();   // the time it stood halted is no time spent getting nowhere
     }
 
     @Override
@@ -288,7 +301,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                 }
             }
             default -> {
-                if (stall.stalled(time, pose)) {
+                if (stall.stalled(time, pose) | creep.stalled(time, pose)) {
                     giveUpTarget(time);
                 }
             }
@@ -350,6 +363,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         follower.clear();
         backOffUntil = time + 0.5;
         stall.reset();
+        creep.reset();
     }
 
     /**

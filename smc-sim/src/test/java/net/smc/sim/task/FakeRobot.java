@@ -43,7 +43,7 @@ final class FakeRobot implements RobotHardware {
     double travelled;
     int bumps;
     double wantLeft;   // the commanded left wheel speed (read by tests)
-    private double wantRight;
+    double wantRight;   // the commanded right wheel speed (read by tests)
     private double left;
     private double right;
     final List<Pose> trail = new ArrayList<>();
