@@ -24,7 +24,24 @@ class InspectionTest {
             + "<start id='s' x='1' y='4' heading='0'/>";
 
     /** A detector robot d1 at the arena's start, its task started with a threshold of 0.35 and its events logged. */
-    private record Rig(SimulationScheduler scheduler, SimWorld world, SimRobot robot, HazardDetector detector, EventLog log) { }
+    private record Rig(SimulationScheduler scheduler, SimWorld world, SimRobot robot, HazardDetector detector, EventLog log) {
+
+        /**
+         * Runs the world in steps of 100 ms, at most {@code steps}, until the detector has no
+         * inspection left, and checks that it ended and that the robot kept out of the hazard at
+         * (6, 4), whose effect disables within 0.6 m.
+         */
+        void runUntilInspected(int steps) {
+            double closest = Double.POSITIVE_INFINITY;
+            for (int s = 0; s < steps && detector.isInspecting(); s++) {
+                scheduler.runFor(100);
+                closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
+            }
+            assertFalse(detector.isInspecting(), "the inspections ended");
+            assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
+            assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        }
+    }
 
     private static Rig detectorRig() throws Exception {
         SimulationScheduler scheduler = new SimulationScheduler();
@@ -40,23 +57,14 @@ class InspectionTest {
     @Test
     void aDetectorInspectsASuspectedHazard_confirmsItFromOutsideItsReach_andSaysSo() throws Exception {
         Rig rig = detectorRig();
-        SimulationScheduler scheduler = rig.scheduler();
         SimWorld world = rig.world();
-        SimRobot robot = rig.robot();
         HazardDetector detector = rig.detector();
         EventLog log = rig.log();
         detector.inspect(6, 4);
         detector.inspect(6.5, 4.2);   // within a metre of the queued point: the same suspect
         assertTrue(detector.isInspecting());
         world.start();
-        double closest = Double.POSITIVE_INFINITY;
-        for (int s = 0; s < 600 && detector.isInspecting(); s++) {
-            scheduler.runFor(100);
-            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
-        }
-        assertFalse(detector.isInspecting(), "the inspection ended");
-        assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
-        assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        rig.runUntilInspected(600);
         assertEquals(1, detector.hazards().size(), "confirmed once: " + detector.hazards());
         assertTrue(log.lines.stream().anyMatch(l -> l.startsWith("hazardDetected|hazardDetected|d1|chemical|")), log.lines.toString());
         assertTrue(log.lines.stream().anyMatch(l -> l.startsWith("inspected|6.0|4.0|true")), log.lines.toString());
@@ -66,23 +74,14 @@ class InspectionTest {
     @Test
     void aDetectorThatFindsNothingWhereItWasSent_looksFromTheOtherSides_untilItSensesTheHazard() throws Exception {
         Rig rig = detectorRig();
-        SimulationScheduler scheduler = rig.scheduler();
         SimWorld world = rig.world();
-        SimRobot robot = rig.robot();
         HazardDetector detector = rig.detector();
         EventLog log = rig.log();
         // the suspect as a poor camera estimate puts it: 1.6 m north of the hazard; seen from the
         // robot's side (west) the sensor stays below the threshold, from the south it does not
         detector.inspect(6, 5.6);
         world.start();
-        double closest = Double.POSITIVE_INFINITY;
-        for (int s = 0; s < 1200 && detector.isInspecting(); s++) {
-            scheduler.runFor(100);
-            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
-        }
-        assertFalse(detector.isInspecting(), "the inspection ended");
-        assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
-        assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        rig.runUntilInspected(1200);
         assertEquals(1, detector.hazards().size(), "found from another side: " + log.lines);
         assertEquals(List.of("inspected|6.0|5.6|true"), log.lines.stream().filter(l -> l.startsWith("inspected|")).toList());
     }
@@ -107,14 +106,7 @@ class InspectionTest {
         world.start();
         scheduler.runFor(500);
         detector.inspect(6, 4);    // queued while the far point is being inspected
-        double closest = Double.POSITIVE_INFINITY;
-        for (int s = 0; s < 3000 && detector.isInspecting(); s++) {
-            scheduler.runFor(100);
-            closest = Math.min(closest, Math.hypot(robot.x() - 6, robot.y() - 4));
-        }
-        assertFalse(detector.isInspecting(), "the inspections ended");
-        assertFalse(robot.disabled(), "the detector stayed out of the hazard's reach: " + robot.disabledBy());
-        assertTrue(closest > 0.6, "closest approach " + closest + " m; the hazard disables within 0.6 m");
+        rig.runUntilInspected(3000);
         assertEquals(1, detector.hazards().size(), "the hazard passed on the way was confirmed: " + log.lines);
         assertTrue(robot.x() > 8, "the detector went on to the far point: at " + robot.x() + ", " + robot.y());
         assertEquals(List.of("inspected|10.0|4.0|false"), log.lines.stream().filter(l -> l.startsWith("inspected|")).toList(),
