@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.Predicate;
 
 import net.smc.core.capability.CapabilityDescription;
 import net.smc.core.capability.CapabilitySummary;
@@ -14,7 +15,6 @@ import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
 import net.smc.core.cell.TeamState.PendingCapability;
 import net.smc.core.cell.TeamState.Refusal;
-import net.smc.core.cell.TeamState.Unchecked;
 import net.smc.core.comm.DeliveryListener;
 import net.smc.core.comm.FailureReason;
 import net.smc.core.message.AssignmentResponse;
@@ -52,8 +52,6 @@ final class Recruiter {
     private final Seating seating;
     private final TeamCounts counts;
     private final BackupCommander backup;
-    /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
-    private String checking;
     /** The vehicle whose {@code newUAV} the policies are deciding on now, or null. */
     private String deciding;
     /** Whether the policies asked for {@link #deciding}'s full description while deciding. */
@@ -74,7 +72,7 @@ final class Recruiter {
         this.rediscover = rediscover;
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
-        this.batches = new ReplyBatches(ctx, st, this::decide, this::check);
+        this.batches = new ReplyBatches(ctx, st, this::decide);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -92,7 +90,7 @@ final class Recruiter {
         }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
-        if (env.sender().equals(checking)) {
+        if (batches.isChecking(env.sender())) {
             return; // a held reply checked now: who asked for the check decides on it
         }
         if (st.owned.isEmpty()) {
@@ -104,63 +102,18 @@ final class Recruiter {
         batches.add(env.sender());
     }
 
-    /**
-     * A discovery reply the transport holds unchecked ({@code AuthenticatingTransport.holdUnverified}),
-     * from a vehicle that claims to be {@code claimed}: remembered as a vehicle to check, and put
-     * with the others of its burst (or, while this cell's role is loading, with the early replies).
-     * Nothing in it is acted on: when the batch is decided on, the replies are checked in this
-     * manager's order among its siblings, one at a time while a seat is open, and each reply that
-     * passes is decided on as any discovery reply ({@link #check}). So a manager that hears a hundred
-     * vehicles and seats ten makes about ten first contacts, not a hundred; a forged reply costs one
-     * check and is never decided on.
-     */
+    /** A discovery reply the transport holds unchecked ({@link ReplyBatches#addUnchecked}). */
     void onUnverifiedReply(String claimed, Address from, DiscoveryReply r) {
-        if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())
-                || !r.summary().vehicle().equals(claimed)) {
-            return;
-        }
-        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis()));
-        if (st.owned.isEmpty()) {
-            st.earlyReplies.add(claimed);
-            return;
-        }
-        batches.add(claimed);
+        batches.addUnchecked(claimed, from, r);
     }
 
     /**
-     * Checks the reply held from {@code vehicle}, if one is: when it passes, it is in {@code st.heard}
-     * (and not decided on here). Whether {@code vehicle}'s reply is now checked and heard.
+     * Checks held replies until one passes whose summary {@code wanted} accepts
+     * ({@link ReplyBatches#checkUntil}): for Supervisor's reassignment and swaps, which read the free
+     * vehicles heard of. Whether one was found.
      */
-    boolean check(String vehicle) {
-        Unchecked u = st.unchecked.remove(vehicle);
-        if (u == null) {
-            return st.heard.containsKey(vehicle);
-        }
-        checking = vehicle;
-        try {
-            ctx.host().checkHeld(u.from());
-        } finally {
-            checking = null;
-        }
-        Heard heard = st.heard.get(vehicle);
-        return heard != null && heard.atMillis() >= u.atMillis();
-    }
-
-    /**
-     * Checks the replies held from vehicles that answered within {@code windowMillis}, in the order
-     * of their names, until one passes whose summary {@code wanted} accepts: for a choice that reads
-     * the free vehicles heard of (Supervisor's reassignment and swaps), which must see checked
-     * replies only. Whether one was found.
-     */
-    boolean checkUntil(long windowMillis, java.util.function.Predicate<CapabilitySummary> wanted) {
-        long now = ctx.clock().nowMillis();
-        for (String vehicle : st.unchecked.entrySet().stream().filter(e -> now - e.getValue().atMillis() <= windowMillis)
-                .map(Map.Entry::getKey).sorted().toList()) {
-            if (check(vehicle) && !st.children.containsKey(vehicle) && wanted.test(st.heard.get(vehicle).summary())) {
-                return true;
-            }
-        }
-        return false;
+    boolean checkUntil(long windowMillis, Predicate<CapabilitySummary> wanted) {
+        return batches.checkUntil(windowMillis, wanted);
     }
 
     /** The role this cell was taking has started: its policies decide on the vehicles that answered meanwhile. */
@@ -423,8 +376,7 @@ final class Recruiter {
         if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
             // The vehicle declined a capability request: it took a seat from another manager since it
             // answered discovery. The request no longer holds rediscovery back; look again now.
-            st.heard.remove(vehicle);
-            st.unchecked.remove(vehicle);
+            st.forgetAnswer(vehicle);
             lookAgain();
             return;
         }
@@ -483,8 +435,7 @@ final class Recruiter {
             }
         }
         st.handover.remove(seat.get().role());
-        st.heard.remove(vehicle);
-        st.unchecked.remove(vehicle);
+        st.forgetAnswer(vehicle);
         ctx.emit(CellEvent.Kind.ASSIGNED, seat.get() + " to " + vehicle + " (now holds " + child.seats + ")");
         backup.sendRosterIfBackup();
         counts.updateMissionState();
@@ -501,8 +452,7 @@ final class Recruiter {
             st.children.remove(vehicle);
             st.linksChanged();
         }
-        st.heard.remove(vehicle); // it refused, or fell silent: what it answered no longer holds
-        st.unchecked.remove(vehicle);
+        st.forgetAnswer(vehicle); // it refused, or fell silent: what it answered no longer holds
         ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
         // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
         // say), not at the next tick.

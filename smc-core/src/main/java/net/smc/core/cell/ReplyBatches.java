@@ -2,12 +2,16 @@ package net.smc.core.cell;
 
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Predicate;
 import java.util.stream.Stream;
 
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Heard;
+import net.smc.core.cell.TeamState.Unchecked;
+import net.smc.core.message.DiscoveryReply;
+import net.smc.core.transport.Address;
 import net.smc.core.transport.Cancellable;
 
 /**
@@ -27,18 +31,81 @@ final class ReplyBatches {
     private final TeamContext ctx;
     private final TeamState st;
     private final Decision decision;
-    /** Checks a vehicle's reply held unchecked, if one is; whether its reply is checked and heard (Recruiter.check). */
-    private final Predicate<String> check;
+    /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
+    private String checking;
     /** The vehicles whose replies came in the burst being taken up; decided on after it. */
     private final Set<String> burst = new LinkedHashSet<>();
     /** The task that decides on {@link #burst}, or null when none is due. */
     private Cancellable burstDue;
 
-    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Predicate<String> check) {
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision) {
         this.ctx = ctx;
         this.st = st;
         this.decision = decision;
-        this.check = check;
+    }
+
+    /**
+     * A discovery reply the transport holds unchecked ({@code AuthenticatingTransport.holdUnverified}),
+     * from a vehicle that claims to be {@code claimed}: remembered as a vehicle to check, and put
+     * with the others of its burst (or, while this cell's role is loading, with the early replies).
+     * Nothing in it is acted on: when the batch is decided on, the replies are checked in this
+     * manager's order among its siblings, one at a time while a seat is open, and each reply that
+     * passes is decided on as any discovery reply ({@link #check}). So a manager that hears a hundred
+     * vehicles and seats ten makes about ten first contacts, not a hundred; a forged reply costs one
+     * check and is never decided on.
+     */
+    void addUnchecked(String claimed, Address from, DiscoveryReply r) {
+        if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())
+                || !r.summary().vehicle().equals(claimed)) {
+            return;
+        }
+        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis()));
+        if (st.owned.isEmpty()) {
+            st.earlyReplies.add(claimed);
+            return;
+        }
+        add(claimed);
+    }
+
+    /** Whether {@code vehicle}'s held reply is being checked now: the check's caller decides on it. */
+    boolean isChecking(String vehicle) {
+        return vehicle.equals(checking);
+    }
+
+    /**
+     * Checks the reply held from {@code vehicle}, if one is: when it passes, it is in {@code st.heard}
+     * (and not decided on by the receiving code). Whether {@code vehicle}'s reply is now checked and heard.
+     */
+    private boolean check(String vehicle) {
+        Unchecked u = st.unchecked.remove(vehicle);
+        if (u == null) {
+            return st.heard.containsKey(vehicle);
+        }
+        checking = vehicle;
+        try {
+            ctx.host().checkHeld(u.from());
+        } finally {
+            checking = null;
+        }
+        Heard heard = st.heard.get(vehicle);
+        return heard != null && heard.atMillis() >= u.atMillis();
+    }
+
+    /**
+     * Checks the replies held from vehicles that answered within {@code windowMillis}, in the order
+     * of their names, until one passes whose summary {@code wanted} accepts: for a choice that reads
+     * the free vehicles heard of (Supervisor's reassignment and swaps), which must see checked
+     * replies only. Whether one was found.
+     */
+    boolean checkUntil(long windowMillis, Predicate<CapabilitySummary> wanted) {
+        long now = ctx.clock().nowMillis();
+        for (String vehicle : st.unchecked.entrySet().stream().filter(e -> now - e.getValue().atMillis() <= windowMillis)
+                .map(Map.Entry::getKey).sorted().toList()) {
+            if (check(vehicle) && !st.children.containsKey(vehicle) && wanted.test(st.heard.get(vehicle).summary())) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -92,7 +159,7 @@ final class ReplyBatches {
 
     /** When {@code vehicle} last answered (its reply held unchecked, or checked); long ago when it did not. */
     private long answeredMillis(String vehicle, long now) {
-        TeamState.Unchecked u = st.unchecked.get(vehicle);
+        Unchecked u = st.unchecked.get(vehicle);
         Heard h = st.heard.get(vehicle);
         long at = Math.max(u == null ? Long.MIN_VALUE : u.atMillis(), h == null ? Long.MIN_VALUE : h.atMillis());
         return at == Long.MIN_VALUE ? now - Long.MAX_VALUE / 2 : at;
@@ -108,7 +175,7 @@ final class ReplyBatches {
             if (!st.hasVacancy()) {
                 return;
             }
-            if (!check.test(vehicle)) {
+            if (!check(vehicle)) {
                 continue;
             }
             Heard heard = st.heard.get(vehicle);

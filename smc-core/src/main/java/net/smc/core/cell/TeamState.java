@@ -81,7 +81,7 @@ final class TeamState {
     final Map<String, Heard> heard = new HashMap<>();
     /**
      * The vehicles whose discovery replies the transport holds unchecked, by the vehicle each claims
-     * to be: where the reply came from and when (Recruiter.onUnverifiedReply). Nothing here is proven:
+     * to be: where the reply came from and when (ReplyBatches.addUnchecked). Nothing here is proven:
      * it chooses only whose reply to check; a reply is acted on once checked (then it is in
      * {@link #heard}).
      */
@@ -131,6 +131,12 @@ final class TeamState {
     }
 
     record Incoming(String from, Address address, long envelopeId, RoleAssignment assignment, long sinceMillis) {
+    }
+
+    /** Forgets what {@code vehicle} answered discovery with, checked or held unchecked: it no longer holds. */
+    void forgetAnswer(String vehicle) {
+        heard.remove(vehicle);
+        unchecked.remove(vehicle);
     }
 
     /** A child's policy request waiting for the file to reach this cell. */
