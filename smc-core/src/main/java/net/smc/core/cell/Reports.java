@@ -70,13 +70,20 @@ final class Reports {
                 counts.put(key, n.intValue());
             }
         }
-        child.size = counts.getOrDefault(SIZE, 1);
-        child.hosted = counts.getOrDefault(HOSTED, 0);
+        int size = counts.getOrDefault(SIZE, 1);
+        int hosted = counts.getOrDefault(HOSTED, 0);
         counts.remove(SIZE);
         counts.remove(HOSTED);
-        child.subtree = counts;
-        child.state = state;
-        childReports++;
+        // A report that repeats the last one (most do: an unchanged subtree is reported again every
+        // sixteenth heartbeat) moves nothing, so this cell's own report is not built again for it.
+        if (size != child.size || hosted != child.hosted || child.subtree == null
+                || !List.copyOf(counts.entrySet()).equals(List.copyOf(child.subtree.entrySet())) || !state.equals(child.state)) {
+            child.size = size;
+            child.hosted = hosted;
+            child.subtree = counts;
+            child.state = state;
+            childReports++;
+        }
         this.counts.updateMissionState();
     }
 
@@ -129,9 +136,15 @@ final class Reports {
                 }
             }
         }
-        child.seats = List.copyOf(mine);
-        st.linksChanged();
+        List<Seat> seats = List.copyOf(mine);
+        // Only a change of the child's seats or of its agreement with this table is a change of the
+        // links: a report that confirms what this cell already holds moves nothing.
+        boolean moved = !seats.equals(child.seats) || child.consistent == conflict;
+        child.seats = seats;
         child.consistent = !conflict;
+        if (moved) {
+            st.linksChanged();
+        }
     }
 
     /**

@@ -5,7 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.MissionState;
@@ -159,6 +161,30 @@ class SteadyStateTrafficTest {
         sim.run(4 * PERIOD);
         assertEquals(failuresBefore, failures(), "no failure declared");
         assertTrue(sim.cell("cdr").children().containsKey(child));
+    }
+
+    @Test
+    void repeatedSubtreeReportsMoveNoManagersLinks() {
+        TeamSimulation sim = formedTeam(55);
+        Map<String, Long> before = new TreeMap<>();
+        for (String parent : List.of("cdr", "s1", "s2")) {
+            before.put(parent, sim.cell(parent).linkVersion());
+        }
+        sim.run(32 * PERIOD);
+        int reports = 0;
+        for (String parent : before.keySet()) {
+            for (String child : sim.cell(parent).children().keySet()) {
+                reports += sent(sim, child, parent, 0, MessageType.SUBTREE_REPORT).size();
+            }
+        }
+        Map<String, Long> after = new TreeMap<>();
+        for (String parent : before.keySet()) {
+            after.put(parent, sim.cell(parent).linkVersion());
+        }
+        // Every child repeated its unchanged report (twice in 32 heartbeats); a manager that took
+        // each repeat for a change would have moved its links (and rebuilt its own report) as often.
+        assertTrue(reports >= 6, reports + " subtree reports in 32 periods");
+        assertEquals(before, after, "the managers' link versions while nothing changed");
     }
 
     private int failures() {
