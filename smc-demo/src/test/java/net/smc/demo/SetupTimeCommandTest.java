@@ -25,7 +25,7 @@ class SetupTimeCommandTest {
 
     private Path costs() throws Exception {
         Path file = dir.resolve("given-costs.properties");
-        new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500).save(file);
+        new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500, 20, 5).save(file);
         return file;
     }
 
