@@ -61,6 +61,23 @@ class SetupTimeCommandTest {
         assertTrue(out.contains("team sent (datagrams/bytes):") && out.contains("ROLE_ASSIGNMENT"), out);
     }
 
+    /** A costs file written before policy texts were compressed replays, the two costs it lacks defaulted and named. */
+    @Test
+    void aCostsFileWithoutTheCompressionCosts_replays_sayingWhichItDefaulted() throws Exception {
+        Path old = dir.resolve("old-costs.properties");
+        Files.writeString(old, Files.readString(costs()).lines()
+                .filter(l -> !l.startsWith("deflateNanosPerByte") && !l.startsWith("inflateNanosPerByte"))
+                .reduce("", (a, b) -> a + b + "\n"));
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "distributed", "--out", "out", "--costs", old.toString(), "--policies",
+                policies().toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("costs: " + old + " has no 'deflateNanosPerByte'"), r.out());
+        assertTrue(r.out().contains("costs: " + old + " has no 'inflateNanosPerByte'"), r.out());
+        assertEquals(CpuCosts.DEFAULT_DEFLATE_NANOS_PER_BYTE,
+                CpuCosts.load(dir.resolve("out/costs.properties")).deflateNanosPerByte(), "saved with the run");
+    }
+
     @Test
     void withoutVerbose_noRunReport() throws Exception {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
