@@ -12,7 +12,7 @@ import net.smc.core.wire.ByteWriter;
  * (RFC 1950: DEFLATE behind a 2-byte header, with an Adler-32 checksum of the text;
  * {@link WireFormat#POLICY_TEXT_DEFLATE}) behind its own two-byte length. The
  * encoder deflates a text of {@link WireFormat#MIN_DEFLATED_POLICY_TEXT} bytes or more and keeps
- * the deflated form when it is shorter. Policy files are small, repetitive PonderTalk and shrink
+ * the deflated form when it is shorter on the wire than the text. Policy files are small, repetitive PonderTalk and shrink
  * to about two fifths; everything above the codec sees the text only.
  *
  * <p>Inflation is bounded: the declared length is checked against
@@ -45,7 +45,7 @@ final class PolicyTextCoding {
         Utf8.encode(text, utf8, 0);
         w.u16(n);
         if (n >= WireFormat.MIN_DEFLATED_POLICY_TEXT) {
-            byte[] deflated = new byte[n - 1];
+            byte[] deflated = new byte[n - 2]; // shorter on the wire than the text, its own length included
             int m = deflate(utf8, deflated);
             if (m >= 0) {
                 w.u8(WireFormat.POLICY_TEXT_DEFLATE);
@@ -58,7 +58,7 @@ final class PolicyTextCoding {
         w.bytes(utf8);
     }
 
-    /** Deflates {@code in} into {@code out}; its length, or -1 if it does not fit (is not shorter than {@code out} allows). */
+    /** Deflates {@code in} into {@code out}; the stream's length, or -1 if it does not fit in {@code out}. */
     private static int deflate(byte[] in, byte[] out) {
         Deflater d = DEFLATERS.get();
         d.reset();

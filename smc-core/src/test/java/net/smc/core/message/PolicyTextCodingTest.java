@@ -93,6 +93,20 @@ class PolicyTextCodingTest {
     }
 
     @Test
+    void aTextDeflateCannotShorten_goesAsItIs() {
+        java.util.Random random = new java.util.Random(7);
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < 100; i++) {
+            sb.append((char) (33 + random.nextInt(94)));
+        }
+        Envelope e = new Envelope("uav1", 7, new PolicyReply(1, "u", 1, sb.toString()));
+        byte[] d = codec.datagram(e);
+        assertEquals(WireFormat.POLICY_TEXT_PLAIN, d[15 + 4 + BEFORE_TEXT + 2]);
+        assertEquals(15 + 4 + BEFORE_TEXT + 3 + 100, d.length);
+        assertEquals(e, Codec.decoded(codec.decode(d)));
+    }
+
+    @Test
     void aStreamFromAnotherDeflater_isRead() {
         byte[] text = MISSION.getBytes(StandardCharsets.UTF_8);
         byte[] z = zlib(text, null);
