@@ -148,7 +148,7 @@ final class SetupTimeCommand implements Callable<Integer> {
             io.stdout().println("transport: Netty UDP on loopback, signed traffic, wall-clock times");
         } else if (costsFile != null) {
             try {
-                costs = CpuCosts.load(io.workingDir().resolve(costsFile));
+                costs = CpuCosts.load(io.workingDir().resolve(costsFile), note -> io.stdout().println("costs: " + note));
             } catch (IOException | IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), "--costs " + costsFile + ": " + e.getMessage());
             }

@@ -25,7 +25,7 @@ class SetupTimeCommandTest {
 
     private Path costs() throws Exception {
         Path file = dir.resolve("given-costs.properties");
-        new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500).save(file);
+        new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500, 20, 5).save(file);
         return file;
     }
 
@@ -59,6 +59,23 @@ class SetupTimeCommandTest {
         assertTrue(out.contains("by level: L1 ") && out.contains(" L3 "), out);
         assertTrue(out.matches("(?s).*busiest cell (cdr|b\\d+l\\d+n\\d+): [0-9.]+ ms charged CPU:.*policy_load.*"), out);
         assertTrue(out.contains("team sent (datagrams/bytes):") && out.contains("ROLE_ASSIGNMENT"), out);
+    }
+
+    /** A costs file written before policy texts were compressed replays, the two costs it lacks defaulted and named. */
+    @Test
+    void aCostsFileWithoutTheCompressionCosts_replays_sayingWhichItDefaulted() throws Exception {
+        Path old = dir.resolve("old-costs.properties");
+        Files.writeString(old, Files.readString(costs()).lines()
+                .filter(l -> !l.startsWith("deflateNanosPerByte") && !l.startsWith("inflateNanosPerByte"))
+                .reduce("", (a, b) -> a + b + "\n"));
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "distributed", "--out", "out", "--costs", old.toString(), "--policies",
+                policies().toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("costs: " + old + " has no 'deflateNanosPerByte'"), r.out());
+        assertTrue(r.out().contains("costs: " + old + " has no 'inflateNanosPerByte'"), r.out());
+        assertEquals(CpuCosts.DEFAULT_DEFLATE_NANOS_PER_BYTE,
+                CpuCosts.load(dir.resolve("out/costs.properties")).deflateNanosPerByte(), "saved with the run");
     }
 
     @Test

@@ -24,10 +24,10 @@ final class ExchangeBodies {
                 w.i64(m.inReplyTo());
                 w.string8(m.uri());
                 w.i32(m.version());
-                w.string16(m.text());
+                PolicyTextCoding.write(m.text(), w);
             },
             r -> new PolicyReply(r.i64("inReplyTo"), r.string8("uri", WireFormat.MAX_URI), r.i32("version"),
-                    r.string16("text", WireFormat.MAX_POLICY_TEXT)));
+                    PolicyTextCoding.read(r, "text")));
 
     static final BodyCodec<Heartbeat> HEARTBEAT = new BodyCodec<>(MessageType.HEARTBEAT, Heartbeat.class,
             (m, w) -> {

@@ -40,6 +40,15 @@ public final class WireFormat {
     public static final int MAX_TEXT = 255;
     /** The text of a policy file: 0 to 65,000 bytes (fragmented when longer than one datagram). */
     public static final int MAX_POLICY_TEXT = 65_000;
+    /** The coding byte of a policy text sent as its UTF-8 bytes. */
+    public static final int POLICY_TEXT_PLAIN = 0;
+    /** The coding byte of a policy text sent as a zlib stream (RFC 1950: DEFLATE with an Adler-32 checksum, no preset dictionary). */
+    public static final int POLICY_TEXT_DEFLATE = 1;
+    /**
+     * The shortest policy text the encoder deflates (UTF-8 bytes); it sends the deflated form when
+     * it is shorter than the text, else the text.
+     */
+    public static final int MIN_DEFLATED_POLICY_TEXT = 64;
     /** A PonderTalk string value: 0 to 4,096 bytes. */
     public static final int MAX_VALUE_STRING = 4_096;
     /** A PonderTalk number: its unscaled value in at most 64 bytes of two's complement. */

@@ -8,7 +8,8 @@
  * splitting large payloads into fragments; {@link net.smc.core.message.MessageDecoder} reads them
  * back, reassembles fragments under bounds of time and memory, and rejects anything else with a
  * counted {@link net.smc.core.message.RejectReason}. The codec is split by concern: the header,
- * field readers and writers, one payload codec per message type, the fragmenter and the
+ * field readers and writers, one payload codec per message type, the policy texts' compression
+ * ({@code PolicyTextCoding}: deflated on the wire, inflated within bounds), the fragmenter and the
  * reassembler. The format and its limits are described in
  * <a href="doc-files/wire-format.md">the wire-format note</a> and {@link net.smc.core.message.WireFormat}.
  *

@@ -129,9 +129,14 @@ public final class ByteWriter {
     }
 
     public void bytes(byte[] src) {
-        ensure(src.length);
-        System.arraycopy(src, 0, buf, pos, src.length);
-        pos += src.length;
+        bytes(src, 0, src.length);
+    }
+
+    /** The {@code length} bytes of {@code src} from {@code offset}. */
+    public void bytes(byte[] src, int offset, int length) {
+        ensure(length);
+        System.arraycopy(src, offset, buf, pos, length);
+        pos += length;
     }
 
     private void ensure(int n) {

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 
 import net.smc.core.message.CapabilityRequest;
 import net.smc.core.message.Heartbeat;
-import net.smc.core.message.PolicyReply;
+import net.smc.core.message.RoleEvent;
 
 /**
  * Reliable delivery, one suite for every transport (the in-memory network and Netty UDP): each
@@ -103,7 +103,8 @@ abstract class ReliableDeliveryContract {
         Peer a = net.peer("uav-a");
         Peer b = net.peer("uav-b");
         long[] id = new long[1];
-        net.onCell(a, () -> id[0] = a.send(b, new PolicyReply(1, "policy://big", 1, "x".repeat(5_000))));
+        // A role event's strings go as they are (a policy text this long would be deflated into one datagram).
+        net.onCell(a, () -> id[0] = a.send(b, new RoleEvent("relay", "bulk", List.of("x".repeat(4_000), "y".repeat(1_000)))));
         net.awaitUntil(() -> a.settled.get() == 1, 10_000);
         assertEquals("delivered", a.outcomes.get(id[0]).result);
         assertEquals(1, b.times(a, id[0]));

@@ -91,12 +91,12 @@ class CodecRoundTripTest {
     @Test
     void aDatagramOfExactly1400Bytes_isNotFragmented_and1401Are() {
         String sender = Samples.ascii(64);
-        // PolicyReply payload: inReplyTo 8, uri 1+1, version 4, text 2+n; header 15+64.
-        int text = WireFormat.MAX_DATAGRAM - (15 + 64) - (8 + 2 + 4 + 2);
-        Envelope fits = new Envelope(sender, 1, new PolicyReply(1, "u", 1, Samples.ascii(text)));
+        // RoleEvent payload: role 1+1, event 1+1, one string value 1+1+2+n, origin 1; header 15+64.
+        int text = WireFormat.MAX_DATAGRAM - (15 + 64) - (6 + 3);
+        Envelope fits = new Envelope(sender, 1, Samples.bulk("r", text));
         assertEquals(WireFormat.MAX_DATAGRAM, codec.datagram(fits).length);
         assertEquals(fits, codec.roundTrip(fits));
-        Envelope over = new Envelope(sender, 2, new PolicyReply(1, "u", 1, Samples.ascii(text + 1)));
+        Envelope over = new Envelope(sender, 2, Samples.bulk("r", text + 1));
         List<byte[]> datagrams = codec.encode(over);
         assertEquals(2, datagrams.size());
         datagrams.forEach(d -> assertTrue(d.length <= WireFormat.MAX_DATAGRAM));
@@ -104,10 +104,10 @@ class CodecRoundTripTest {
     }
 
     @Test
-    void policyTextOf20KB_isFragmentedAndReassembled() {
-        Envelope e = new Envelope("uav1", 77, new PolicyReply(5, "policy:/roles/relay", 2, Samples.policyText(20_000)));
+    void aMessageOf20KB_isFragmentedAndReassembled() {
+        Envelope e = new Envelope("uav1", 77, Samples.bulk("relay", 20_000));
         List<byte[]> datagrams = codec.encode(e);
-        assertEquals(15, datagrams.size());  // 20,039 payload bytes, 1,372 per fragment
+        assertEquals(15, datagrams.size());  // 20,025 payload bytes, 1,372 per fragment
         datagrams.forEach(d -> assertTrue(d.length <= WireFormat.MAX_DATAGRAM));
         assertEquals(e, codec.roundTrip(e));
         assertEquals(0, codec.decoder.reassembliesInProgress());
@@ -139,10 +139,10 @@ class CodecRoundTripTest {
 
     @Test
     void encodeIntoBuffer_refusesAMessageThatNeedsFragments() {
-        Envelope e = new Envelope("uav1", 8, new PolicyReply(1, "u", 1, Samples.ascii(5_000)));
+        Envelope e = new Envelope("uav1", 8, Samples.bulk("r", 5_000));
         ByteBuffer buf = ByteBuffer.allocate(WireFormat.MAX_DATAGRAM);
         IllegalArgumentException ex = assertThrows(IllegalArgumentException.class, () -> codec.encoder.encode(e, buf));
-        assertTrue(ex.getMessage().startsWith("POLICY_REPLY from 'uav1' (id 8): its payload of 5016 bytes needs"
+        assertTrue(ex.getMessage().startsWith("ROLE_EVENT from 'uav1' (id 8): its payload of 5012 bytes needs"
                 + " fragments"), ex.getMessage());
         assertEquals(0, buf.position());
     }
@@ -159,7 +159,7 @@ class CodecRoundTripTest {
     @Test
     void counters_countMessagesDatagramsAndDecodes() {
         codec.roundTrip(new Envelope("u", 1, new Ack(1)));
-        codec.roundTrip(new Envelope("u", 2, new PolicyReply(1, "u", 1, Samples.ascii(3_000))));
+        codec.roundTrip(new Envelope("u", 2, Samples.bulk("r", 3_000)));
         assertEquals(2, codec.encoder.messages());
         assertEquals(4, codec.encoder.datagrams());
         assertEquals(2, codec.decoder.decoded());

@@ -118,7 +118,7 @@ class DecoderRejectionTest {
 
     @Test
     void stringLengthPastTheEnd_isTruncatedBeforeAnyAllocation() {
-        reject(Raw.of(MessageType.POLICY_REPLY).i64(1).str8("u").i32(1).u16(60_000).raw(new byte[10]).datagram(),
+        reject(Raw.of(MessageType.POLICY_REPLY).i64(1).str8("u").i32(1).u16(60_000).u8(WireFormat.POLICY_TEXT_PLAIN).raw(new byte[10]).datagram(),
                 RejectReason.TRUNCATED, "POLICY_REPLY from 'uav1' (id 7): text needs 60000 bytes but 10 remain");
     }
 

@@ -76,7 +76,7 @@ class DecoderRobustnessTest {
 
     @Test
     void everySingleBitFlipOfAFragment_isRejectedOrPending() {
-        Envelope e = new Envelope("uav1", 3, new PolicyReply(1, "policy:/a", 1, Samples.policyText(3_000)));
+        Envelope e = new Envelope("uav1", 3, Samples.bulk("a", 3_000));
         for (byte[] d : codec.encode(e)) {
             for (int bit = 0; bit < d.length * 8; bit++) {
                 byte[] flipped = d.clone();
@@ -91,7 +91,7 @@ class DecoderRobustnessTest {
 
     @Test
     void aFlippedFragmentAmongItsSiblings_neverBreaksTheDecoder() {
-        Envelope e = new Envelope("uav1", 3, new PolicyReply(1, "policy:/a", 1, Samples.policyText(3_000)));
+        Envelope e = new Envelope("uav1", 3, Samples.bulk("a", 3_000));
         List<byte[]> fragments = codec.encode(e);
         Random random = new Random(5);
         for (int n = 0; n < 2_000; n++) {
@@ -105,7 +105,7 @@ class DecoderRobustnessTest {
                 }
                 DecodeResult r = decodeChecked(decoder, d);
                 if (r instanceof DecodeResult.Decoded decoded && !decoded.envelope().equals(e)) {
-                    // A flip inside the chunk changes the text; anything else would have been caught.
+                    // A flip inside the chunk changes a string; anything else would have been caught.
                     assertEquals(e.sender(), decoded.envelope().sender());
                 }
             }

@@ -14,8 +14,9 @@ import org.junit.jupiter.api.Test;
 class ReassemblyTest {
     private final Codec codec = new Codec(new ReassemblySettings(1_000, WireFormat.MAX_PAYLOAD, 3));
 
+    /** A message of about {@code bytes} bytes, fragmented as it is (not compressed). */
     private static Envelope policy(String sender, long id, int bytes) {
-        return new Envelope(sender, id, new PolicyReply(id, "policy:/p" + id, 1, Samples.policyText(bytes)));
+        return new Envelope(sender, id, Samples.bulk("p" + id, bytes));
     }
 
     private DecodeResult.FragmentPending pending(byte[] datagram) {
@@ -40,7 +41,7 @@ class ReassemblyTest {
     @Test
     void pendingResult_namesTheMessage() {
         DecodeResult.FragmentPending p = pending(codec.encode(policy("uav1", 9, 5_000)).get(2));
-        assertEquals(new DecodeResult.FragmentPending("uav1", 9, MessageType.POLICY_REPLY, 1, 4), p);
+        assertEquals(new DecodeResult.FragmentPending("uav1", 9, MessageType.ROLE_EVENT, 1, 4), p);
     }
 
     @Test

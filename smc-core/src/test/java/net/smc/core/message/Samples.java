@@ -79,6 +79,19 @@ final class Samples {
         return sb.toString();
     }
 
+    /**
+     * A role event carrying {@code bytes} bytes of ASCII text in strings of at most 4,000 bytes: a
+     * large message whose payload the codec writes as it is (policy texts it compresses). Its
+     * payload is {@code 6 + 3k + bytes} bytes for {@code k} strings (role and event "r"/"e", no origin).
+     */
+    static RoleEvent bulk(String role, int bytes) {
+        List<Object> values = new java.util.ArrayList<>();
+        for (int left = bytes; left > 0; left -= 4_000) {
+            values.add(ascii(Math.min(left, 4_000)));
+        }
+        return new RoleEvent(role, "e", values);
+    }
+
     /** A list nested {@code depth} deep: {@code [[[x]]]} for 3. */
     static List<Object> nested(int depth, Object leaf) {
         List<Object> v = Arrays.asList(leaf);

@@ -56,14 +56,14 @@ class WireFormatTest {
 
     @Test
     void fragments_carryTypeIndexCountAndTotal() {
-        Envelope e = new Envelope("u", 1, new PolicyReply(1, "u", 1, Samples.ascii(2_000)));
+        Envelope e = new Envelope("u", 1, Samples.bulk("r", 2_007));
         List<byte[]> d = codec.encode(e);
         assertEquals(2, d.size());
-        int total = 8 + 2 + 4 + 2 + 2_000;
+        int total = 6 + 3 + 2_007;
         // header: magic, version, type 0xFF, sender "u", id 1, payload length = 9 + chunk of ceil(2016 / 2) bytes
         assertEquals("53 4d 01 ff 01 75 00 00 00 00 00 00 00 01 03 f9", hex(d.get(0)).substring(0, 47));
-        // fragment header: type POLICY_REPLY, index 1, count 2, total 2016
-        assertEquals("08 00 01 00 02 00 00 07 e0", hex(d.get(1)).substring(48, 48 + 26));
+        // fragment header: type ROLE_EVENT, index 1, count 2, total 2016
+        assertEquals("0b 00 01 00 02 00 00 07 e0", hex(d.get(1)).substring(48, 48 + 26));
         assertEquals(total, 0x7e0);
         assertEquals(16 + 9 + 1_008, d.get(0).length);
         assertEquals(16 + 9 + 1_008, d.get(1).length);

@@ -27,7 +27,13 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *   <li>a {@code PolicyReply} of a policy its receiver loads (given by {@code loads}: the files of
  *       the role it takes, not the copies a manager keeps to serve the roles below it or a backup
  *       commander keeps of the mission) costs the parsing and loading of the text it carries, per
- *       byte of the datagram (of the whole message when fragmented, charged with its first fragment);</li>
+ *       byte of text (of the whole message when fragmented, charged with its first fragment);</li>
+ *   <li>a {@code PolicyReply} whose text is {@link WireFormat#MIN_DEFLATED_POLICY_TEXT} bytes or
+ *       more costs its sender the deflating of the text (the encoder deflates every such text and
+ *       sends the deflated form when shorter), and one that came deflated costs its receiver the
+ *       inflating, each per byte of text and charged with the message's first datagram. A lost
+ *       datagram's retransmission is charged both again, as it is its codec, although the sender's
+ *       transport resends the datagrams it encoded;</li>
  *   <li>a {@code DiscoveryReply} costs its receiver one condition per {@code newUAV} policy it runs
  *       (given by {@code newUavPolicies} from the receiving vehicle's id);</li>
  *   <li>a datagram its receiver drops before checking it, because the cell would ignore it whoever
@@ -116,6 +122,12 @@ public final class CpuCharge implements CpuModel {
         int type = type(data);
         ledger.sent(type, data.length);
         double ns = owed(node) + charge(node, Category.CODEC, codec(data.length));
+        if (type == MessageType.POLICY_REPLY.code()) {
+            PolicyText text = policyText(data);
+            if (text != null && text.bytes() >= WireFormat.MIN_DEFLATED_POLICY_TEXT) {
+                ns += charge(node, Category.DEFLATE, costs.deflateNanosPerByte() * text.bytes());
+            }
+        }
         if (to == null) {
             ns += charge(node, Category.SIGN, costs.signNanos());
         } else if (type == MessageType.DISCOVERY_REPLY.code() && !node.met(node(to))) {
@@ -148,7 +160,15 @@ public final class CpuCharge implements CpuModel {
         int type = type(data);
         ledger.received(node.number, type);
         if (type == MessageType.POLICY_REPLY.code()) {
-            ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * loadedBytes(node, data));
+            PolicyText text = policyText(data);
+            if (text != null) {
+                if (text.deflated()) {
+                    ns += charge(node, Category.INFLATE, costs.inflateNanosPerByte() * text.bytes());
+                }
+                if (node.vehicle != null && loads.test(node.vehicle, text.uri())) {
+                    ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * text.bytes());
+                }
+            }
         } else if (type == MessageType.DISCOVERY_REPLY.code()) {
             String vehicle = node.vehicle;
             ns += charge(node, Category.CONDITION,
@@ -220,39 +240,39 @@ public final class CpuCharge implements CpuModel {
         return payload < data.length ? data[payload] & 0xFF : -1;
     }
 
+    /** What is read of a {@code PolicyReply}'s first datagram: the policy's URI, its text's UTF-8 length and coding. */
+    private record PolicyText(String uri, int bytes, boolean deflated) {
+    }
+
     /**
-     * The bytes of policy text a {@code PolicyReply} datagram gives {@code node} to load: the datagram's
-     * length (a fragment's first: the whole message's) when the receiver loads the policy it names, else 0.
+     * The policy a {@code PolicyReply} datagram carries (for a fragmented message, read from its
+     * first fragment, which holds the fields before the text); null for a later fragment or a
+     * datagram too short to hold them.
      */
-    private int loadedBytes(Node node, byte[] data) {
+    private PolicyText policyText(byte[] data) {
         int at = payloadOffset;
         int payload = at + WireFormat.FIXED_HEADER + (data[at + SENDER_LENGTH_OFFSET] & 0xFF);
-        int length = data.length;
         if ((data[at + TYPE_OFFSET] & 0xFF) == WireFormat.FRAGMENT_CODE) {
             if (payload + WireFormat.FRAGMENT_HEADER > data.length || u16(data, payload + 1) != 0) {
-                return 0; // not the first fragment: the message was charged with that one
+                return null; // not the first fragment: the message was charged with that one
             }
-            length = (int) Math.min(Integer.MAX_VALUE, u32(data, payload + 5));
             payload += WireFormat.FRAGMENT_HEADER;
         }
         int uriAt = payload + 8; // after the request id it answers
-        if (uriAt >= data.length || node.vehicle == null) {
-            return 0;
+        if (uriAt >= data.length) {
+            return null;
         }
         int n = data[uriAt] & 0xFF;
-        if (uriAt + 1 + n > data.length) {
-            return 0;
+        int textAt = uriAt + 1 + n + 4; // after the URI and the version
+        if (textAt + 3 > data.length) {
+            return null;
         }
-        String uri = new String(data, uriAt + 1, n, StandardCharsets.UTF_8);
-        return loads.test(node.vehicle, uri) ? length : 0;
+        return new PolicyText(new String(data, uriAt + 1, n, StandardCharsets.UTF_8), u16(data, textAt),
+                (data[textAt + 2] & 0xFF) == WireFormat.POLICY_TEXT_DEFLATE);
     }
 
     private static int u16(byte[] b, int at) {
         return (b[at] & 0xFF) << 8 | (b[at + 1] & 0xFF);
-    }
-
-    private static long u32(byte[] b, int at) {
-        return (long) u16(b, at) << 16 | u16(b, at + 2);
     }
 
     /** The vehicle named as a datagram's sender, or "" if unreadable. */

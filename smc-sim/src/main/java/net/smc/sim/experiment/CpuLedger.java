@@ -30,6 +30,10 @@ public final class CpuLedger {
         HANDSHAKE,
         /** Parsing and loading policy text. */
         POLICY_LOAD,
+        /** Deflating policy text to send. */
+        DEFLATE,
+        /** Inflating policy text received deflated. */
+        INFLATE,
         /** Offering {@code newUAV} to obligation policies. */
         CONDITION
     }

@@ -8,6 +8,7 @@ import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
@@ -21,7 +22,7 @@ import net.smc.core.transport.Address;
 import net.smc.sim.experiment.CpuLedger.Category;
 
 class CpuChargeTest {
-    private static final CpuCosts COSTS = new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500);
+    private static final CpuCosts COSTS = new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500, 20, 5);
     private final Address manager = Address.of("10.0.0.1", 7000);
     private final Address vehicle = Address.of("10.0.0.2", 7000);
 
@@ -31,9 +32,13 @@ class CpuChargeTest {
     }
 
     private static List<byte[]> sealedPolicyReply(String sender, String uri, int textLength) {
+        return sealedPolicyReply(sender, uri, "x".repeat(textLength));
+    }
+
+    private static List<byte[]> sealedPolicyReply(String sender, String uri, String text) {
         List<byte[]> sealed = new ArrayList<>();
         for (byte[] message : new MessageEncoder().datagrams(new Envelope(sender, 7, new PolicyReply(1, uri, 1,
-                "x".repeat(textLength))))) {
+                text)))) {
             sealed.add(ByteBuffer.allocate(message.length + 16).putLong(42).put(message).putLong(99).array());
         }
         return sealed;
@@ -58,13 +63,59 @@ class CpuChargeTest {
             charge.receiveMicros(vehicle, manager, d, false);
         }
         assertFalse(charge.ledger().millisByCategory(0).containsKey(Category.POLICY_LOAD), "a copy kept to serve a child");
-        List<byte[]> fragments = sealedPolicyReply("cdr", "policy:/roles/b0l1/auth", 3_000);
-        assertTrue(fragments.size() > 2, "fragments: " + fragments.size());
+        List<byte[]> fragments = sealedPolicyReply("cdr", "policy:/roles/b0l1/auth", noise(3_000));
+        assertTrue(fragments.size() > 1, "fragments: " + fragments.size());
         for (byte[] d : fragments) {
             charge.receiveMicros(vehicle, manager, d, false);
         }
-        double expected = COSTS.loadNanosPerByte() * (3_000 + "policy:/roles/b0l1/auth".length() + 8 + 1 + 4 + 4) / 1e6;
-        assertEquals(expected, charge.ledger().millisByCategory(0).get(Category.POLICY_LOAD), expected * 0.02);
+        Map<Category, Double> charged = charge.ledger().millisByCategory(0);
+        assertEquals(COSTS.loadNanosPerByte() * 3_000 / 1e6, charged.get(Category.POLICY_LOAD), 1e-9, "per byte of text");
+        assertEquals(COSTS.inflateNanosPerByte() * (300 + 3_000) / 1e6, charged.get(Category.INFLATE), 1e-9,
+                "both replies were inflated, the kept copy too");
+    }
+
+    /** Text that deflate shrinks little (random letters): a reply of 3,000 bytes still needs fragments. */
+    private static String noise(int length) {
+        Random random = new Random(1);
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < length; i++) {
+            sb.append((char) (random.nextInt(94) + 33));
+        }
+        return sb.toString();
+    }
+
+    @Test
+    void aDeflatedReplyCostsItsSenderTheDeflatingAndItsReceiverTheInflating_perByteOfText() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> false, IdealAuthentication.PAYLOAD_OFFSET);
+        String text = "p := root/factory/ecapolicy create. p event: /event/newUAV; active: true.\n".repeat(10);
+        byte[] reply = sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", text).get(0);
+        assertTrue(reply.length < text.length() / 2, reply.length + " bytes on the wire for " + text.length());
+        charge.sendMicros(manager, vehicle, reply);
+        charge.receiveMicros(vehicle, manager, reply, false);
+        CpuLedger ledger = charge.ledger();
+        assertEquals(COSTS.deflateNanosPerByte() * text.length() / 1e6, ledger.millisByCategory(0).get(Category.DEFLATE),
+                1e-9);
+        assertFalse(ledger.millisByCategory(0).containsKey(Category.INFLATE));
+        assertEquals(COSTS.inflateNanosPerByte() * text.length() / 1e6, ledger.millisByCategory(1).get(Category.INFLATE),
+                1e-9, "inflated though not loaded");
+        assertFalse(ledger.millisByCategory(1).containsKey(Category.DEFLATE));
+    }
+
+    @Test
+    void aShortTextGoesAsItIs_andCostsNoCompression() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        byte[] reply = sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", 63).get(0);
+        charge.sendMicros(manager, vehicle, reply);
+        charge.sendMicros(vehicle, manager, reply); // so that the charge knows the receiver's vehicle
+        charge.receiveMicros(vehicle, manager, reply, false);
+        assertFalse(charge.ledger().millisByCategory(0).containsKey(Category.DEFLATE));
+        assertFalse(charge.ledger().millisByCategory(1).containsKey(Category.INFLATE));
+        assertEquals(COSTS.loadNanosPerByte() * 63 / 1e6, charge.ledger().millisByCategory(1).get(Category.POLICY_LOAD),
+                1e-9);
+        CpuCharge longer = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        longer.sendMicros(manager, vehicle, sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", 64).get(0));
+        assertEquals(COSTS.deflateNanosPerByte() * 64 / 1e6, longer.ledger().millisByCategory(0).get(Category.DEFLATE),
+                1e-9, "from 64 bytes the encoder deflates");
     }
 
     @Test
@@ -76,8 +127,8 @@ class CpuChargeTest {
         long micros = charge.receiveMicros(vehicle, manager, reply, false);
         CpuLedger ledger = charge.ledger();
         Map<Category, Double> received = ledger.millisByCategory(1);
-        assertEquals(COSTS.loadNanosPerByte() * reply.length / 1e6, received.get(Category.POLICY_LOAD), 1e-9);
-        assertTrue(micros >= Math.round(COSTS.loadNanosPerByte() * reply.length / 1_000), () -> micros + " us");
+        assertEquals(COSTS.loadNanosPerByte() * 300 / 1e6, received.get(Category.POLICY_LOAD), 1e-9);
+        assertTrue(micros >= Math.round(COSTS.loadNanosPerByte() * 300 / 1_000), () -> micros + " us");
         assertEquals("b0l1n0", ledger.name(0));
         assertEquals(Map.of("POLICY_REPLY", 1L), ledger.receivedByKind(1));
         assertEquals(Map.of("POLICY_REPLY", 2L), ledger.sentByKind());

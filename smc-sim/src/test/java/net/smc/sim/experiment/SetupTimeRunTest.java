@@ -20,7 +20,7 @@ import net.smc.policy.api.PolicyRepository;
 
 class SetupTimeRunTest {
     /** Fixed costs of the order Calibration measures, so the test does not depend on the machine. */
-    static final CpuCosts COSTS = new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500);
+    static final CpuCosts COSTS = new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500, 20, 5);
 
     @TempDir
     Path dir;
