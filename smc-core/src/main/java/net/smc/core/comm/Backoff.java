@@ -22,10 +22,33 @@ final class Backoff {
      * and never over {@link SenderSettings#longestTimeoutMillis(int)}.
      */
     long timeoutMillis(int tries) {
-        double base = settings.baseTimeoutMillis(tries);
-        double jitter = settings.jitterFraction();
-        double spread = jitter == 0 ? 1.0 : 1.0 + jitter * (2 * random.nextDouble() - 1);
-        long timeout = Math.round(base * spread);
+        return timeoutMillis(tries, settings.initialTimeoutMillis());
+    }
+
+    /**
+     * The same when the first try's timeout is {@code firstMillis} (a round-trip estimate, never
+     * above the initial timeout) instead of the initial timeout: each later try multiplies it by the
+     * backoff factor, up to the cap, so no try waits longer than with the initial timeout.
+     */
+    long timeoutMillis(int tries, long firstMillis) {
+        double base = settings.baseTimeoutMillis(tries, firstMillis);
+        long timeout = Math.round(base * spread());
         return Math.max(1, Math.min(timeout, settings.longestTimeoutMillis(tries)));
+    }
+
+    /**
+     * When a message sent at {@code sentMillis} is given up on by an adaptive sender: the fixed
+     * schedule's total ({@link SenderSettings#fixedScheduleMillis()}) spread by one jitter draw, so
+     * within the failure bound.
+     */
+    long giveUpMillis(long sentMillis) {
+        long total = Math.round(settings.fixedScheduleMillis() * spread());
+        return sentMillis + Math.min(total, settings.failureBoundMillis());
+    }
+
+    /** A factor drawn from {@code [1 - jitter, 1 + jitter]}; 1 without jitter (and no draw). */
+    private double spread() {
+        double jitter = settings.jitterFraction();
+        return jitter == 0 ? 1.0 : 1.0 + jitter * (2 * random.nextDouble() - 1);
     }
 }
