@@ -31,6 +31,8 @@ final class ReplyBatches {
     private final TeamContext ctx;
     private final TeamState st;
     private final Decision decision;
+    /** Told when a checked reply gave the sender a round trip (Supervisor re-times its discovery repeat). */
+    private final Runnable measured;
     /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
     private String checking;
     /** The vehicles whose replies came in the burst being taken up; decided on after it. */
@@ -38,7 +40,8 @@ final class ReplyBatches {
     /** The task that decides on {@link #burst}, or null when none is due. */
     private Cancellable burstDue;
 
-    ReplyBatches(TeamContext ctx, TeamState st, Decision decision) {
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Runnable measured) {
+        this.measured = measured;
         this.ctx = ctx;
         this.st = st;
         this.decision = decision;
@@ -59,7 +62,7 @@ final class ReplyBatches {
                 || !r.summary().vehicle().equals(claimed)) {
             return;
         }
-        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis()));
+        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis(), r.inReplyTo()));
         if (st.owned.isEmpty()) {
             st.earlyReplies.add(claimed);
             return;
@@ -74,7 +77,9 @@ final class ReplyBatches {
 
     /**
      * Checks the reply held from {@code vehicle}, if one is: when it passes, it is in {@code st.heard}
-     * (and not decided on by the receiving code). Whether {@code vehicle}'s reply is now checked and heard.
+     * (and not decided on by the receiving code), and the time from the discovery it answers to its
+     * arrival is a round trip to the vehicle ({@link DiscoveryTimes}). Whether {@code vehicle}'s reply
+     * is now checked and heard.
      */
     private boolean check(String vehicle) {
         Unchecked u = st.unchecked.remove(vehicle);
@@ -88,7 +93,11 @@ final class ReplyBatches {
             checking = null;
         }
         Heard heard = st.heard.get(vehicle);
-        return heard != null && heard.atMillis() >= u.atMillis();
+        boolean passed = heard != null && heard.atMillis() >= u.atMillis();
+        if (passed && st.discoveries.measure(ctx.comm(), u.from(), u.inReplyTo(), u.atMillis())) {
+            measured.run();
+        }
+        return passed;
     }
 
     /**

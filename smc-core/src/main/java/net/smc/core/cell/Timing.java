@@ -75,14 +75,29 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
 
     /**
      * Retransmission of the protocols' critical messages, paced by the heartbeat period: first try
-     * after comTimeout/5, doubling up to comTimeout, eight tries. A message to a silent peer is
-     * given up on within {@link net.smc.core.comm.SenderSettings#failureBoundMillis()} (about
-     * 6.5 comTimeouts).
+     * after comTimeout/5 at most, doubling up to comTimeout, eight tries. The first try's timeout
+     * follows the measured round trips (the peer's, else the cell's over its other peers; see
+     * {@link net.smc.core.comm.SenderSettings}), no shorter than {@link #minRetransmissionMillis()}.
+     * A message to a silent peer is given up on at the time the fixed schedule would (about 6.4
+     * comTimeouts, jittered), within {@link net.smc.core.comm.SenderSettings#failureBoundMillis()}.
      */
     public net.smc.core.comm.SenderSettings senderSettings() {
         long first = Math.max(1, comTimeoutMillis / 5);
         return new net.smc.core.comm.SenderSettings(first, 2.0, Math.max(first, comTimeoutMillis), 8, 0.2,
-                Math.max(30_000, 20 * failureTimeoutMillis), 65_536);
+                Math.max(30_000, 20 * failureTimeoutMillis), 65_536, minRetransmissionMillis());
+    }
+
+    /**
+     * The shortest first retransmission timeout a round-trip estimate may set: three tenths of the
+     * fixed one (30 ms for a 500 ms heartbeat period). The timer starts when a message has left the
+     * sender's radio, so the sender's own queue needs no margin here; this one covers the receiver's:
+     * an Ack waits while its sender's CPU loads a policy file (about 5 ms a kilobyte) and behind
+     * what its radio is sending (a datagram behind 3 KB of policy files waits about 10 ms), which a
+     * few quick round trips do not show. Shorter, a retransmission would often be spurious, and a
+     * spurious copy of a policy file fills the queue it waits in.
+     */
+    public long minRetransmissionMillis() {
+        return Math.max(1, Math.max(1, comTimeoutMillis / 5) * 3 / 10);
     }
 
     /**
