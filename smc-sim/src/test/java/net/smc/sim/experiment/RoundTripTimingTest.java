@@ -44,10 +44,11 @@ class RoundTripTimingTest {
         return MissionGenerator.write(TreeShape.of(ROLES, 4), dir, Project.bootEvents());
     }
 
-    private TeamSimulation team(GeneratedMission g, List<CellEvent> events, Map<String, Long> firstTimeouts) throws Exception {
+    private TeamSimulation team(GeneratedMission g, long seed, List<CellEvent> events, Map<String, Long> firstTimeouts)
+            throws Exception {
         Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
         TeamSimulation[] sim = new TeamSimulation[1];
-        sim[0] = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), 5)
+        sim[0] = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
                 .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(LinkProfile.fixed(3).withLatency(3, 2))
                 .listener(e -> {
                     events.add(e);
@@ -69,42 +70,49 @@ class RoundTripTimingTest {
     void everyFirstAssignmentIsTimedByMeasuredRoundTrips_theDiscoveryRepliesFirstOfAll() throws Exception {
         List<CellEvent> events = new ArrayList<>();
         Map<String, Long> firstTimeouts = new HashMap<>();
-        TeamSimulation sim = team(generated(), events, firstTimeouts);
+        TeamSimulation sim = team(generated(), 5, events, firstTimeouts);
         sim.start();
         assertTrue(sim.runUntil(() -> events.stream().filter(e -> e.kind() == CellEvent.Kind.ACCEPTED).count() == ROLES - 1,
                 10_000), () -> String.join("\n", sim.trace()));
         assertEquals(100, TIMING.senderSettings().initialTimeoutMillis());
         assertEquals(ROLES - 1, firstTimeouts.size(), () -> "assignments: " + firstTimeouts);
-        // A first sample r gives r + 4 r / 2 = 3 r: at most 30 ms for round trips of 6-10 ms; never under the minimum.
-        firstTimeouts.forEach((pair, timeout) -> assertTrue(timeout >= TIMING.minRetransmissionMillis() && timeout <= 33,
-                () -> pair + ": the first assignment waits " + timeout + " ms for its Ack, not about 3 round trips"));
+        // A first sample r gives r + 4 r / 2 = 3 r, at most 30 ms for round trips of 6-10 ms: the minimum, 50 ms, applies.
+        assertEquals(50, TIMING.minRetransmissionMillis());
+        firstTimeouts.forEach((pair, timeout) -> assertEquals(TIMING.minRetransmissionMillis(), timeout,
+                () -> pair + ": the first assignment waits " + timeout + " ms for its Ack"));
     }
 
+    /**
+     * Seeds 6-8 (the commander's first tick, at a random phase of its 500 ms period, comes later
+     * than the repeat in each): the repeat is no sooner than the minimum timeout and not the fixed
+     * first timeout (100 ms) after the first discovery.
+     */
     @Test
     void aCommanderWhoseVehicleMissedItsDiscoveryDiscoversAgainWhenTheOthersAnswersShowItShouldHaveAnswered()
             throws Exception {
-        List<CellEvent> events = new ArrayList<>();
         GeneratedMission g = generated();
-        TeamSimulation sim = team(g, events, new HashMap<>());
         String lost = g.roles().stream().filter(r -> r.level() == 1).findFirst().orElseThrow().vehicle(0);
-        Address lostAt = sim.address(lost);
-        // The first discovery's copy to one level-1 vehicle, and nothing else, is lost.
-        sim.network().setRadio((from, to) -> sim.nowMillis() > 2 || !to.equals(lostAt));
-        Discoveries discoveries = new Discoveries();
-        sim.network().addObserver(discoveries);
-        sim.start();
-        sim.run(150);
-        String commander = commander(events);
-        List<Long> sent = discoveries.sent.getOrDefault(sim.address(commander), List.of());
-        assertTrue(sent.size() >= 2, () -> "the commander discovered at " + sent + "\n" + String.join("\n", sim.trace()));
-        long repeat = sent.get(1) - sent.get(0);
         long minimum = TIMING.minRetransmissionMillis();
-        assertTrue(repeat >= minimum && repeat < 40, () -> "the commander discovered again " + repeat
-                + " ms after its first discovery: not when the answers (round trips of 6-10 ms) should have come\n"
-                + String.join("\n", sim.trace()));
-        long assigned = events.stream().filter(e -> e.vehicle().equals(commander) && e.kind() == CellEvent.Kind.ASSIGNING
-                && e.detail().endsWith(" to " + lost)).mapToLong(CellEvent::timeMillis).findFirst().orElse(-1);
-        assertTrue(assigned > 0 && assigned < 60, () -> lost + "'s seat given at " + assigned + " ms\n" + String.join("\n", sim.trace()));
+        for (long seed = 6; seed <= 8; seed++) {
+            List<CellEvent> events = new ArrayList<>();
+            TeamSimulation sim = team(g, seed, events, new HashMap<>());
+            Address lostAt = sim.address(lost);
+            // The first discovery's copy to one level-1 vehicle, and nothing else, is lost.
+            sim.network().setRadio((from, to) -> sim.nowMillis() > 2 || !to.equals(lostAt));
+            Discoveries discoveries = new Discoveries();
+            sim.network().addObserver(discoveries);
+            sim.start();
+            sim.run(150);
+            String commander = commander(events);
+            List<Long> sent = discoveries.sent.getOrDefault(sim.address(commander), List.of());
+            String where = "seed " + seed + ": the commander discovered at " + sent + "\n" + String.join("\n", sim.trace());
+            assertTrue(sent.size() >= 2, where);
+            long repeat = sent.get(1) - sent.get(0);
+            assertTrue(repeat >= minimum && repeat < minimum + 10, () -> "again after " + repeat + " ms; " + where);
+            long assigned = events.stream().filter(e -> e.vehicle().equals(commander) && e.kind() == CellEvent.Kind.ASSIGNING
+                    && e.detail().endsWith(" to " + lost)).mapToLong(CellEvent::timeMillis).findFirst().orElse(-1);
+            assertTrue(assigned > 0 && assigned < minimum + 25, () -> lost + "'s seat given at " + assigned + " ms; " + where);
+        }
     }
 
     /** When each cell broadcast a discovery, by its address. */
