@@ -31,9 +31,25 @@ final class Backoff {
      * backoff factor, up to the cap, so no try waits longer than with the initial timeout.
      */
     long timeoutMillis(int tries, long firstMillis) {
-        double base = settings.baseTimeoutMillis(tries, firstMillis);
-        long timeout = Math.round(base * spread());
-        return Math.max(1, Math.min(timeout, settings.longestTimeoutMillis(tries)));
+        return jittered(tries, settings.baseTimeoutMillis(tries, firstMillis), spread());
+    }
+
+    /**
+     * The wait for an Ack after try {@code tries} of a message whose copy leaves the transport
+     * {@code queuedMillis} from now: the timeout backing off from {@code firstMillis} counted from
+     * when the copy leaves, but never longer than the fixed schedule's from now (one jitter draw
+     * spreads both). So a copy behind a short queue is not retransmitted while it waits, and no try
+     * waits longer than with the fixed timeout, however deep the queue.
+     */
+    long timeoutMillis(int tries, long firstMillis, long queuedMillis) {
+        double spread = spread();
+        long fixed = jittered(tries, settings.baseTimeoutMillis(tries), spread);
+        long measured = queuedMillis + jittered(tries, settings.baseTimeoutMillis(tries, firstMillis), spread);
+        return Math.min(fixed, measured);
+    }
+
+    private long jittered(int tries, double base, double spread) {
+        return Math.max(1, Math.min(Math.round(base * spread), settings.longestTimeoutMillis(tries)));
     }
 
     /**

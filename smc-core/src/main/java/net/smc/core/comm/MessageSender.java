@@ -288,8 +288,8 @@ public final class MessageSender {
     /**
      * Sends a copy and sets its deadline. With a fixed timeout, from now; with an adaptive one, from
      * when the copy leaves the transport (a message behind a queue of others is not retransmitted
-     * before it is out), backing off from the message's first timeout, the last try waiting until
-     * the fixed schedule's give-up time.
+     * before it is out), backing off from the message's first timeout, but never later than the fixed
+     * schedule would from now; the last try waits until the fixed schedule's give-up time.
      */
     private void transmit(Pending p) {
         p.tries++;
@@ -298,11 +298,11 @@ public final class MessageSender {
         if (rtt == null) {
             p.deadlineMillis = now + backoff.timeoutMillis(p.tries);
         } else {
-            long departure = now + backlog.getAsLong();
+            long queued = backlog.getAsLong();
             if (p.tries == 1) {
-                p.firstDepartureMillis = departure;
+                p.firstDepartureMillis = now + queued;
             }
-            long deadline = departure + backoff.timeoutMillis(p.tries, p.firstTimeoutMillis);
+            long deadline = now + backoff.timeoutMillis(p.tries, p.firstTimeoutMillis, queued);
             if (p.tries == settings.maxTries()) {
                 deadline = Math.max(deadline, backoff.giveUpMillis(p.firstSentMillis));
             }

@@ -92,27 +92,46 @@ class AdaptiveTimeoutTest {
         assertEquals(30 + 10, deliverOne(net, a, c), "c was never measured: b's round trips time it");
     }
 
+    /** Peers a, b, c on a 10 kB/s radio (a 1.3 kB datagram occupies it 130 ms), each measured at 10 ms. */
+    private static Peer[] slowRadio(SimNet net) {
+        net.network.setCpuModel(CpuModel.FREE);
+        net.network.setBandwidth(10_000);
+        Peer[] p = {net.peer("uav-a"), net.peer("uav-b"), net.peer("uav-c")};
+        p[0].manager.sender().roundTrip(p[1].address(), 10);
+        p[0].manager.sender().roundTrip(p[2].address(), 10);
+        return p;
+    }
+
     @Test
     void timerRunsFromWhenTheMessageLeftTheQueue_soAQueuedMessageIsNotRetransmitted() {
         SimNet net = net(ADAPTIVE);
-        net.network.setCpuModel(CpuModel.FREE);
-        net.network.setBandwidth(10_000); // 10 kB/s: a 1.4 kB datagram occupies the radio 140 ms
-        Peer a = net.peer("uav-a");
-        Peer b = net.peer("uav-b");
-        Peer c = net.peer("uav-c");
-        MessageSender s = a.manager.sender();
-        s.roundTrip(b.address(), 10);
-        s.roundTrip(c.address(), 10);
-        a.send(b, new PolicyReply(1, "file:/x.p2", 1, "x".repeat(3_000))); // three datagrams, about 320 ms of radio
+        Peer[] p = slowRadio(net);
+        MessageSender s = p[0].manager.sender();
+        p[0].send(p[1], new PolicyReply(1, "file:/x.p2", 1, "x".repeat(1_200))); // one datagram, about 130 ms of radio
         long sent = net.scheduler.nowMillis();
-        long id = a.send(c, new CapabilityRequest("role"));
-        net.awaitUntil(() -> a.settled.get() == 2, 5_000);
-        assertEquals("delivered", a.outcomes.get(id).result);
-        assertTrue(a.outcomes.get(id).settledMillis - sent > 300, "the request waited behind the file");
+        long id = p[0].send(p[2], new CapabilityRequest("role"));
+        net.awaitUntil(() -> p[0].settled.get() == 2, 5_000);
+        assertEquals("delivered", p[0].outcomes.get(id).result);
+        assertTrue(p[0].outcomes.get(id).settledMillis - sent > 130, "the request waited behind the file");
         assertEquals(0, s.counters().retransmitted(), "nothing went again while it waited in the queue: " + s.counters());
-        assertEquals(0, c.manager.sender().counters().duplicates());
-        assertTrue(s.rtt().smoothedRttMillis(c.address()) < 20,
-                "the round trip is measured from when the request left: " + s.rtt().smoothedRttMillis(c.address()));
+        assertEquals(0, p[2].manager.sender().counters().duplicates());
+        assertTrue(s.rtt().smoothedRttMillis(p[2].address()) < 20,
+                "the round trip is measured from when the request left: " + s.rtt().smoothedRttMillis(p[2].address()));
+    }
+
+    @Test
+    void behindADeepQueue_noTryWaitsLongerThanTheFixedTimeout() {
+        SimNet net = net(ADAPTIVE);
+        Peer[] p = slowRadio(net);
+        p[0].send(p[1], new PolicyReply(1, "file:/x.p2", 1, "x".repeat(3_000))); // three datagrams, about 320 ms of radio
+        long id = p[0].send(p[2], new CapabilityRequest("role"));
+        net.scheduler.runUntil(() -> false, net.scheduler.nowMillis() + 201);
+        assertEquals(2, p[0].manager.sender().counters().retransmitted(),
+                "the file and the request went again at the fixed 200 ms from the send, the request's first copy still queued");
+        net.awaitUntil(() -> p[0].settled.get() == 2, 5_000);
+        assertEquals("delivered", p[0].outcomes.get(id).result);
+        net.scheduler.runUntil(() -> false, net.scheduler.nowMillis() + 2_000);
+        assertEquals(1, p[2].manager.sender().counters().duplicates(), "both copies of the request arrived");
     }
 
     @Test
