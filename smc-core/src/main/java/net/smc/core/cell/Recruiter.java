@@ -93,6 +93,10 @@ final class Recruiter {
             ctx.reject(env, "capability summary names vehicle '" + r.summary().vehicle() + "'");
             return;
         }
+        if (!st.discoveries.answersOurs(r.inReplyTo())) {
+            ctx.reject(env, "answers message " + r.inReplyTo() + ", none of this cell's latest discoveries");
+            return;
+        }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
         if (batches.isChecking(env.sender())) {

@@ -51,7 +51,8 @@ final class ReplyBatches {
      * A discovery reply the transport holds unchecked ({@code AuthenticatingTransport.holdUnverified}),
      * from a vehicle that claims to be {@code claimed}: remembered as a vehicle to check, and put
      * with the others of its burst (or, while this cell's role is loading, with the early replies).
-     * Nothing in it is acted on: when the batch is decided on, the replies are checked in this
+     * A reply naming none of this cell's latest discoveries, and a copy of the answer already held,
+     * are not held. Nothing in it is acted on: when the batch is decided on, the replies are checked in this
      * manager's order among its siblings, one at a time while a seat is open, and each reply that
      * passes is decided on as any discovery reply ({@link #check}). So a manager that hears a hundred
      * vehicles and seats ten makes about ten first contacts, not a hundred; a forged reply costs one
@@ -59,8 +60,12 @@ final class ReplyBatches {
      */
     void addUnchecked(String claimed, Address from, DiscoveryReply r) {
         if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())
-                || !r.summary().vehicle().equals(claimed)) {
+                || !r.summary().vehicle().equals(claimed) || !st.discoveries.answersOurs(r.inReplyTo())) {
             return;
+        }
+        Unchecked before = st.unchecked.get(claimed);
+        if (before != null && before.inReplyTo() == r.inReplyTo() && before.from().equals(from)) {
+            return; // a copy of the answer held (a network duplicate, a replay): no newer answer
         }
         st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis(), r.inReplyTo()));
         if (st.owned.isEmpty()) {

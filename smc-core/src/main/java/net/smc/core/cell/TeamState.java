@@ -150,7 +150,8 @@ final class TeamState {
 
     /**
      * A discovery reply held unchecked: the address it came from (the key to check it by), when it
-     * came, and the discovery it answers (its round trip is measured once it passes its check).
+     * came (its first copy: a later copy of the same answer is not held again), and the discovery it
+     * answers (its round trip is measured once it passes its check).
      */
     record Unchecked(Address from, long atMillis, long inReplyTo) {
     }
