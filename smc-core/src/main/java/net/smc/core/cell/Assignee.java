@@ -164,8 +164,9 @@ final class Assignee {
             return;
         }
         st.earlyReplies.clear();
-        st.earlyDiscoveryMillis = ctx.clock().nowMillis();
-        ctx.comm().broadcast(new Discovery(ctx.missionId(), a.role(), ctx.slots().level(a.role()), a.epoch()));
+        long id = ctx.comm().broadcast(new Discovery(ctx.missionId(), a.role(), ctx.slots().level(a.role()), a.epoch()));
+        st.earlyDiscoveryMillis = ctx.clock().nowMillis() + ctx.comm().backlogMillis();
+        st.discoveries.sent(id, st.earlyDiscoveryMillis);
     }
 
     /** The policy files of {@code role} itself: its role-missions and authorisations. */

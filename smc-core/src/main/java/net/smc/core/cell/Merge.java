@@ -21,7 +21,8 @@ final class Merge {
     /** Broadcasts a discovery naming this cell's primary role. */
     void discover() {
         Seat primary = st.seats.get(0);
-        ctx.comm().broadcast(new Discovery(ctx.missionId(), primary.role(), ctx.slots().level(primary.role()), st.epoch));
+        long id = ctx.comm().broadcast(new Discovery(ctx.missionId(), primary.role(), ctx.slots().level(primary.role()), st.epoch));
+        st.discoveries.sent(id, ctx.clock().nowMillis() + ctx.comm().backlogMillis());
     }
 
     /** Two acting commanders met: the one with the higher epoch, then the lower vehicle id, stays. */

@@ -68,11 +68,16 @@ final class Recruiter {
     /** The discovery replies decided on together: a burst, those that came while the role was loading. */
     private final ReplyBatches batches;
 
-    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
+    /** Told when a discovery reply gave the sender a round trip (Supervisor re-times its discovery repeat). */
+    private final Runnable measured;
+
+    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover,
+              Runnable measured) {
         this.rediscover = rediscover;
+        this.measured = measured;
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
-        this.batches = new ReplyBatches(ctx, st, this::decide);
+        this.batches = new ReplyBatches(ctx, st, this::decide, measured);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -88,10 +93,18 @@ final class Recruiter {
             ctx.reject(env, "capability summary names vehicle '" + r.summary().vehicle() + "'");
             return;
         }
+        if (!st.discoveries.answersOurs(r.inReplyTo())) {
+            ctx.reject(env, "answers message " + r.inReplyTo() + ", none of this cell's latest discoveries");
+            return;
+        }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
         if (batches.isChecking(env.sender())) {
-            return; // a held reply checked now: who asked for the check decides on it
+            return; // a held reply checked now: who asked for the check decides on it, and measures it
+        }
+        // A reply the transport checked as it came: its round trip to the discovery it answers.
+        if (ctx.address(env.sender()).filter(a -> st.discoveries.measure(ctx.comm(), a, r.inReplyTo(), now)).isPresent()) {
+            measured.run();
         }
         if (st.owned.isEmpty()) {
             // An answer to the discovery sent as the assignment arrived: the role's policies decide on

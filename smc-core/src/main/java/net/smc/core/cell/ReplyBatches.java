@@ -31,6 +31,8 @@ final class ReplyBatches {
     private final TeamContext ctx;
     private final TeamState st;
     private final Decision decision;
+    /** Told when a checked reply gave the sender a round trip (Supervisor re-times its discovery repeat). */
+    private final Runnable measured;
     /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
     private String checking;
     /** The vehicles whose replies came in the burst being taken up; decided on after it. */
@@ -38,7 +40,8 @@ final class ReplyBatches {
     /** The task that decides on {@link #burst}, or null when none is due. */
     private Cancellable burstDue;
 
-    ReplyBatches(TeamContext ctx, TeamState st, Decision decision) {
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Runnable measured) {
+        this.measured = measured;
         this.ctx = ctx;
         this.st = st;
         this.decision = decision;
@@ -48,7 +51,8 @@ final class ReplyBatches {
      * A discovery reply the transport holds unchecked ({@code AuthenticatingTransport.holdUnverified}),
      * from a vehicle that claims to be {@code claimed}: remembered as a vehicle to check, and put
      * with the others of its burst (or, while this cell's role is loading, with the early replies).
-     * Nothing in it is acted on: when the batch is decided on, the replies are checked in this
+     * A reply naming none of this cell's latest discoveries, and a copy of the answer already held,
+     * are not held. Nothing in it is acted on: when the batch is decided on, the replies are checked in this
      * manager's order among its siblings, one at a time while a seat is open, and each reply that
      * passes is decided on as any discovery reply ({@link #check}). So a manager that hears a hundred
      * vehicles and seats ten makes about ten first contacts, not a hundred; a forged reply costs one
@@ -56,10 +60,14 @@ final class ReplyBatches {
      */
     void addUnchecked(String claimed, Address from, DiscoveryReply r) {
         if ((st.owned.isEmpty() && st.incoming == null) || !r.mission().equals(ctx.missionId())
-                || !r.summary().vehicle().equals(claimed)) {
+                || !r.summary().vehicle().equals(claimed) || !st.discoveries.answersOurs(r.inReplyTo())) {
             return;
         }
-        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis()));
+        Unchecked before = st.unchecked.get(claimed);
+        if (before != null && before.inReplyTo() == r.inReplyTo() && before.from().equals(from)) {
+            return; // a copy of the answer held (a network duplicate, a replay): no newer answer
+        }
+        st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis(), r.inReplyTo()));
         if (st.owned.isEmpty()) {
             st.earlyReplies.add(claimed);
             return;
@@ -74,7 +82,9 @@ final class ReplyBatches {
 
     /**
      * Checks the reply held from {@code vehicle}, if one is: when it passes, it is in {@code st.heard}
-     * (and not decided on by the receiving code). Whether {@code vehicle}'s reply is now checked and heard.
+     * (and not decided on by the receiving code), and the time from the discovery it answers to its
+     * arrival is a round trip to the vehicle ({@link DiscoveryTimes}). Whether {@code vehicle}'s reply
+     * is now checked and heard.
      */
     private boolean check(String vehicle) {
         Unchecked u = st.unchecked.remove(vehicle);
@@ -88,7 +98,11 @@ final class ReplyBatches {
             checking = null;
         }
         Heard heard = st.heard.get(vehicle);
-        return heard != null && heard.atMillis() >= u.atMillis();
+        boolean passed = heard != null && heard.atMillis() >= u.atMillis();
+        if (passed && st.discoveries.measure(ctx.comm(), u.from(), u.inReplyTo(), u.atMillis())) {
+            measured.run();
+        }
+        return passed;
     }
 
     /**

@@ -47,6 +47,10 @@ final class Supervisor {
     private boolean stopped;
     /** The next early repeat of discovery while a seat stays open (see {@link #repeatDiscovery}), or null. */
     private Cancellable repeatDue;
+    /** When {@link #repeatDue} fires, and whether it is the first repeat after the discovery that left at {@link #repeatFromMillis}. */
+    private long repeatAtMillis;
+    private boolean firstRepeat;
+    private long repeatFromMillis;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -167,7 +171,7 @@ final class Supervisor {
         }
         fillSecondarySeats();
         swapTowardsOptimal(now);
-        boolean open = noteDiscovering();
+        boolean open = noteDiscovering(now + ctx.comm().backlogMillis());
         if (open || (st.acting && !st.recruitingHeld && st.ticks % Timing.BEACON_TICKS == 0)) {
             merge.discover();
         }
@@ -177,14 +181,17 @@ final class Supervisor {
         counts.updateMissionState();
     }
 
-    /** Whether this cell has an open seat; a DISCOVERING event marks each start of discovery. */
-    private boolean noteDiscovering() {
+    /**
+     * Whether this cell has an open seat; a DISCOVERING event marks each start of discovery, whose
+     * repeats follow the discovery that leaves at {@code discoveryLeftMillis}.
+     */
+    private boolean noteDiscovering(long discoveryLeftMillis) {
         // While a policy holds recruiting, the manager looks for no one: no discovery, so no assignment.
         boolean open = st.hasVacancy() && !st.recruitingHeld;
         if (open && !st.discovering) {
             ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
                     + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
-            repeatDiscovery(ctx.timing().senderSettings().initialTimeoutMillis());
+            startRepeats(discoveryLeftMillis);
         }
         st.discovering = open;
         return open;
@@ -194,20 +201,51 @@ final class Supervisor {
      * Discovery and its replies travel unacknowledged: when either is lost, a seat would stay open
      * until the next tick's discovery, a whole heartbeat period later, on every level of the tree
      * below it. So, from each start of discovery, while a seat stays open it is discovered again
-     * after the first retransmission timeout of the critical messages, then after twice that, and so
-     * on while the wait is below a heartbeat period (100, 200 and 400 ms for a 500 ms period); from
-     * then on the tick discovers every period. Each repeat goes through {@link #rediscover}: none
-     * while capability requests are out, and within its rate limit.
+     * when the answers to the discovery that started it should have come: the cell's retransmission
+     * timeout ({@code MessageSender.cellTimeoutMillis}: its measured round trips, which the replies
+     * to its discoveries feed, plus four deviations, no shorter than the timing's minimum; the fixed
+     * first timeout while nothing was measured) after that discovery left; then after twice that,
+     * and so on while the wait is below a heartbeat period; from then on the tick discovers every
+     * period. The first repeat is brought forward when replies measured meanwhile shorten the
+     * estimate (a commander's first discovery is timed before any round trip is known). Each repeat
+     * goes through {@link #rediscover}: none while capability requests are out, and within its rate limit.
      */
-    private void repeatDiscovery(long afterMillis) {
-        if (repeatDue != null || stopped || afterMillis >= ctx.timing().comTimeoutMillis()) {
+    private void startRepeats(long discoveryLeftMillis) {
+        if (repeatDue != null || stopped) {
             return;
         }
-        repeatDue = ctx.scheduler().schedule(afterMillis, () -> {
+        long wait = ctx.comm().sender().cellTimeoutMillis();
+        repeatFromMillis = discoveryLeftMillis;
+        firstRepeat = true;
+        armRepeat(discoveryLeftMillis + wait, wait);
+    }
+
+    /** A discovery reply gave a round trip: a first repeat due later than the estimate now says is brought forward. */
+    void roundTripMeasured() {
+        if (repeatDue == null || !firstRepeat) {
+            return;
+        }
+        long wait = ctx.comm().sender().cellTimeoutMillis();
+        long at = repeatFromMillis + wait;
+        if (at < repeatAtMillis) {
+            repeatDue.cancel();
             repeatDue = null;
+            armRepeat(at, wait);
+        }
+    }
+
+    private void armRepeat(long atMillis, long waitMillis) {
+        if (stopped || waitMillis >= ctx.timing().comTimeoutMillis()) {
+            return;
+        }
+        long now = ctx.clock().nowMillis();
+        repeatAtMillis = Math.max(now, atMillis);
+        repeatDue = ctx.scheduler().schedule(repeatAtMillis - now, () -> {
+            repeatDue = null;
+            firstRepeat = false;
             if (!stopped && !st.seats.isEmpty() && st.hasVacancy() && !st.recruitingHeld) {
                 rediscover();
-                repeatDiscovery(2 * afterMillis);
+                armRepeat(ctx.clock().nowMillis() + 2 * waitMillis, 2 * waitMillis);
             }
         });
     }
@@ -219,7 +257,7 @@ final class Supervisor {
      * period while a seat stays open. Returns whether it discovered.
      */
     boolean discoverNow() {
-        if (!st.seats.isEmpty() && !st.owned.isEmpty() && noteDiscovering()) {
+        if (!st.seats.isEmpty() && !st.owned.isEmpty() && noteDiscovering(ctx.clock().nowMillis() + ctx.comm().backlogMillis())) {
             merge.discover();
             return true;
         }
@@ -227,15 +265,16 @@ final class Supervisor {
     }
 
     /**
-     * This cell has just taken a role. When it discovered as the assignment arrived (Assignee),
-     * less than the first retransmission timeout ago, the answers may still be coming: its
-     * discovery starts (a DISCOVERING event, and its early repeats) without a second broadcast.
+     * This cell has just taken a role. When the discovery it sent as the assignment arrived
+     * (Assignee) left less than the cell's retransmission timeout ago, the answers may still be
+     * coming: its discovery starts (a DISCOVERING event, and its early repeats, timed from that
+     * discovery) without a second broadcast.
      */
     void roleStarted() {
         long sinceEarly = ctx.clock().nowMillis() - st.earlyDiscoveryMillis;
-        if (sinceEarly < ctx.timing().senderSettings().initialTimeoutMillis()) {
+        if (sinceEarly < ctx.comm().sender().cellTimeoutMillis()) {
             if (!st.seats.isEmpty() && !st.owned.isEmpty()) {
-                noteDiscovering();
+                noteDiscovering(st.earlyDiscoveryMillis);
             }
             return;
         }

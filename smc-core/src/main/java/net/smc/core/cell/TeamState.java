@@ -86,6 +86,8 @@ final class TeamState {
      * {@link #heard}).
      */
     final Map<String, Unchecked> unchecked = new HashMap<>();
+    /** When this cell's latest discoveries left it: a reply to one is a round trip (Recruiter, ReplyBatches, Supervisor). */
+    final DiscoveryTimes discoveries = new DiscoveryTimes();
     /**
      * Vehicles the policies wanted asked for their full description, by the roles they were wanted
      * for, while as many requests for those roles were out as the role has open seats and a margin
@@ -98,8 +100,8 @@ final class TeamState {
      */
     final Map<String, List<ParkedRequest>> parkedPolicyRequests = new HashMap<>();
     /**
-     * When this cell, taking a role that manages others, discovered as the assignment arrived, with
-     * the role's files still on their way (Assignee; far in the past: never), and the vehicles that
+     * When the discovery this cell sent as the assignment of a role that manages others arrived left
+     * it, with the role's files still on their way (Assignee; far in the past: never), and the vehicles that
      * answered before the role started, which its policies decide on once it has (Recruiter).
      */
     long earlyDiscoveryMillis = Long.MIN_VALUE / 2;
@@ -146,8 +148,12 @@ final class TeamState {
     record Heard(CapabilitySummary summary, long atMillis) {
     }
 
-    /** A discovery reply held unchecked: the address it came from (the key to check it by) and when. */
-    record Unchecked(Address from, long atMillis) {
+    /**
+     * A discovery reply held unchecked: the address it came from (the key to check it by), when it
+     * came (its first copy: a later copy of the same answer is not held again), and the discovery it
+     * answers (its round trip is measured once it passes its check).
+     */
+    record Unchecked(Address from, long atMillis, long inReplyTo) {
     }
 
     /**

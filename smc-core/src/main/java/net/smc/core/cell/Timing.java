@@ -75,14 +75,33 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
 
     /**
      * Retransmission of the protocols' critical messages, paced by the heartbeat period: first try
-     * after comTimeout/5, doubling up to comTimeout, eight tries. A message to a silent peer is
-     * given up on within {@link net.smc.core.comm.SenderSettings#failureBoundMillis()} (about
-     * 6.5 comTimeouts).
+     * after comTimeout/5 at most, doubling up to comTimeout, eight tries. The first try's timeout
+     * follows the measured round trips (the peer's, else the cell's over its other peers; see
+     * {@link net.smc.core.comm.SenderSettings}), no shorter than {@link #minRetransmissionMillis()}.
+     * A message to a silent peer is given up on at the time the fixed schedule would (about 6.4
+     * comTimeouts, jittered), within {@link net.smc.core.comm.SenderSettings#failureBoundMillis()}.
      */
     public net.smc.core.comm.SenderSettings senderSettings() {
         long first = Math.max(1, comTimeoutMillis / 5);
         return new net.smc.core.comm.SenderSettings(first, 2.0, Math.max(first, comTimeoutMillis), 8, 0.2,
-                Math.max(30_000, 20 * failureTimeoutMillis), 65_536);
+                Math.max(30_000, 20 * failureTimeoutMillis), 65_536, minRetransmissionMillis());
+    }
+
+    /**
+     * The shortest first retransmission timeout a round-trip estimate may set: half the fixed one
+     * (50 ms for a 500 ms heartbeat period, against round trips of 8-16 ms on the set-up
+     * experiment's radio). The timer starts when a message has left the sender's radio, so the
+     * sender's own queue needs no margin here; this one covers the receiver's, which the round trips
+     * measured on a quiet path (a discovery reply, the first Acks) do not show: an Ack waits while its
+     * sender's CPU loads a policy file (about 5 ms a kilobyte) and behind what its radio is sending
+     * (a datagram behind 3 KB of policy files waits about 10 ms; a manager seating ten children
+     * queues about 35 KB). Shorter, retransmissions are spurious more often, and a spurious copy of a
+     * policy file fills the queue it waits in: with three tenths (30 ms) a 1,000-role set-up sent
+     * about 70 more retransmissions than with the fixed timeout (of about 6,500 critical messages),
+     * with half about 20 more.
+     */
+    public long minRetransmissionMillis() {
+        return Math.max(1, Math.max(1, comTimeoutMillis / 5) / 2);
     }
 
     /**

@@ -219,6 +219,15 @@ public final class CommunicationManager {
         return id;
     }
 
+    /**
+     * How long from now until what this cell has handed to its transport has left it
+     * ({@link Transport#backlogMillis()}): a request sent now leaves then, and a round trip is
+     * measured from then.
+     */
+    public long backlogMillis() {
+        return transport.backlogMillis();
+    }
+
     /** The vehicle id every message of this cell carries as its sender. */
     public String vehicleId() {
         return vehicleId;

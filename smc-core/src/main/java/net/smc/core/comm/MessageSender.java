@@ -4,6 +4,8 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.LongSupplier;
+import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
 
 import org.slf4j.Logger;
@@ -43,6 +45,10 @@ public final class MessageSender {
     private final IdSource ids;
     private final SenderSettings settings;
     private final Backoff backoff;
+    /** The round-trip estimates that set each first timeout; null when the settings fix it. */
+    private final RttEstimator rtt;
+    /** How long the transport's queue holds what is handed to it now, in ms. */
+    private final LongSupplier backlog;
     private final PendingTable pending = new PendingTable();
     private final RetryTimer timer;
     private final DuplicateWindow window;
@@ -54,6 +60,8 @@ public final class MessageSender {
 
     MessageSender(String self, Clock clock, Scheduler scheduler, RandomGenerator random, SenderSettings settings,
                   Wire wire, IdSource ids) {
+        this.backlog = wire::backlogMillis;
+        this.rtt = settings.adaptive() ? new RttEstimator(settings) : null;
         this.self = self;
         this.clock = clock;
         this.wire = wire;
@@ -79,7 +87,7 @@ public final class MessageSender {
         }
         long id = ids.next();
         List<byte[]> datagrams = wire.encode(new Envelope(self, id, message));
-        Pending p = new Pending(id, to, message.type(), datagrams, listener, clock.nowMillis());
+        Pending p = new Pending(id, to, message.type(), datagrams, listener, clock.nowMillis(), firstTimeoutMillis(to));
         transmit(p); // first, so that a transport that refuses leaves nothing behind
         pending.add(p);
         counters.sent++;
@@ -113,6 +121,9 @@ public final class MessageSender {
         pending.remove(p.id);
         p.settled = true;
         counters.acked++;
+        if (rtt != null && p.tries == 1) { // Karn's rule: the Ack of a retransmitted message may answer any copy
+            rtt.sample(p.to, Math.max(0, clock.nowMillis() - p.firstDepartureMillis));
+        }
         try {
             p.listener.delivered(p.id);
         } catch (RuntimeException e) {
@@ -239,14 +250,71 @@ public final class MessageSender {
         return window.evictedEarly();
     }
 
+    /**
+     * A round trip to {@code peer} measured outside this sender: a reply that names the request it
+     * answers (a discovery reply names its discovery), from when the request left this cell's
+     * transport to when the reply arrived. It counts as the Ack of a message sent once would, so a
+     * peer is measured before the first critical message to it. Nothing when the timeout is fixed.
+     *
+     * @throws IllegalArgumentException when it is negative
+     */
+    public void roundTrip(Address peer, long rttMillis) {
+        if (rtt != null) {
+            rtt.sample(peer, rttMillis);
+        }
+    }
+
+    /**
+     * The first-try timeout a message to {@code peer} would get now: its round-trip estimate, the
+     * cell's when it has none, the initial timeout when nothing was measured or the timeout is fixed.
+     */
+    public long firstTimeoutMillis(Address peer) {
+        return rtt == null ? settings.initialTimeoutMillis() : rtt.timeoutMillis(peer);
+    }
+
+    /**
+     * The cell's retransmission timeout over all its peers ({@link #firstTimeoutMillis} of a peer
+     * never measured): how long the answers to a request broadcast to many may take.
+     */
+    public long cellTimeoutMillis() {
+        return rtt == null ? settings.initialTimeoutMillis() : rtt.cellTimeoutMillis();
+    }
+
+    /** The round-trip estimates, null when the first timeout is fixed (for tests). */
+    RttEstimator rtt() {
+        return rtt;
+    }
+
+    /**
+     * Sends a copy and sets its deadline. With a fixed timeout, from now; with an adaptive one, from
+     * when the copy leaves the transport (a message behind a queue of others is not retransmitted
+     * before it is out), backing off from the message's first timeout, but never later than the fixed
+     * schedule would from now; the last try waits until the fixed schedule's give-up time.
+     */
     private void transmit(Pending p) {
         p.tries++;
-        p.deadlineMillis = clock.nowMillis() + backoff.timeoutMillis(p.tries);
         wire.send(p.to, p.datagrams);
+        long now = clock.nowMillis();
+        if (rtt == null) {
+            p.deadlineMillis = now + backoff.timeoutMillis(p.tries);
+        } else {
+            long queued = backlog.getAsLong();
+            if (p.tries == 1) {
+                p.firstDepartureMillis = now + queued;
+            }
+            long deadline = now + backoff.timeoutMillis(p.tries, p.firstTimeoutMillis, queued);
+            if (p.tries == settings.maxTries()) {
+                deadline = Math.max(deadline, backoff.giveUpMillis(p.firstSentMillis));
+            }
+            p.deadlineMillis = deadline;
+        }
         timer.watch(p);
     }
 
     private void timedOut(Pending p) {
+        if (rtt != null && p.tries == 1) {
+            rtt.timedOut(p.to);
+        }
         if (p.tries >= settings.maxTries()) {
             pending.remove(p.id);
             fail(p, FailureReason.NO_ACK);

@@ -17,6 +17,10 @@ final class Pending {
     final List<byte[]> datagrams;
     final DeliveryListener listener;
     final long firstSentMillis;
+    /** The first try's timeout, fixed at the send (the round-trip estimate then); later tries back off from it. */
+    final long firstTimeoutMillis;
+    /** When the first copy left the transport ({@code Transport.backlogMillis}): round trips are measured from it. */
+    long firstDepartureMillis;
     /** Transmissions so far, the first included. */
     int tries;
     /** When the current try times out. */
@@ -25,13 +29,14 @@ final class Pending {
     boolean settled;
 
     Pending(long id, Address to, MessageType type, List<byte[]> datagrams, DeliveryListener listener,
-            long firstSentMillis) {
+            long firstSentMillis, long firstTimeoutMillis) {
         this.id = id;
         this.to = to;
         this.type = type;
         this.datagrams = datagrams;
         this.listener = listener;
         this.firstSentMillis = firstSentMillis;
+        this.firstTimeoutMillis = firstTimeoutMillis;
     }
 
     @Override

@@ -40,6 +40,11 @@ final class Wire {
         return encoder.datagrams(envelope);
     }
 
+    /** How long the transport's queue holds what is handed to it now ({@link Transport#backlogMillis()}). */
+    long backlogMillis() {
+        return transport.backlogMillis();
+    }
+
     void send(Address to, List<byte[]> datagrams) {
         for (byte[] d : datagrams) {
             transport.send(to, d);

@@ -36,6 +36,11 @@ public abstract class ForwardingTransport implements Transport {
     }
 
     @Override
+    public long backlogMillis() {
+        return inner.backlogMillis();
+    }
+
+    @Override
     public void close() {
         inner.close();
     }

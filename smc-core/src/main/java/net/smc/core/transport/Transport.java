@@ -54,6 +54,17 @@ public interface Transport extends AutoCloseable {
     void broadcast(byte[] data);
 
     /**
+     * How long from now until the last datagram handed to this endpoint has left it (its transmit
+     * queue: a radio sends one datagram after another), in ms; 0 when it has left, or when the
+     * endpoint cannot tell (a UDP socket hands datagrams to the kernel). The Message-Sender starts a
+     * message's retransmission timer when the message has left, not when it was queued, so that a
+     * message behind a queue of others is not retransmitted before its first copy is out.
+     */
+    default long backlogMillis() {
+        return 0;
+    }
+
+    /**
      * Registers the one receiver of this endpoint. Datagrams that arrive before it is set are
      * dropped and counted.
      *

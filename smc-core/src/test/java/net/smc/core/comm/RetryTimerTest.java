@@ -18,7 +18,7 @@ class RetryTimerTest {
 
     private Pending pending(long id, long deadline) {
         Pending p = new Pending(id, Address.loopback(4001), MessageType.CAPABILITY_REQUEST, List.of(),
-                DeliveryListener.IGNORE, 0);
+                DeliveryListener.IGNORE, 0, 100);
         p.tries = 1;
         p.deadlineMillis = deadline;
         return p;

@@ -1,6 +1,7 @@
 package net.smc.core.comm;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -68,5 +69,32 @@ class SenderSettingsTest {
     void withRetransmission_growsTheDuplicateWindowToCoverTheNewBound() {
         SenderSettings s = SenderSettings.DEFAULTS.withRetransmission(1_000, 2, 60_000, 8);
         assertTrue(s.duplicateWindowMillis() >= s.failureBoundMillis());
+    }
+
+    @Test
+    void minTimeout_mustLieBetweenOneAndTheInitialTimeout() {
+        var e = assertThrows(IllegalArgumentException.class, () -> new SenderSettings(10, 2, 100, 3, 0, 1_000, 10, 11));
+        assertEquals("min timeout of 11 ms is out of range; it must be from 1 ms to the initial timeout of 10 ms",
+                e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> new SenderSettings(10, 2, 100, 3, 0, 1_000, 10, 0));
+    }
+
+    @Test
+    void adaptive_onlyWhenTheMinimumIsBelowTheInitialTimeout() {
+        assertFalse(SenderSettings.DEFAULTS.adaptive());
+        assertEquals(200, SenderSettings.DEFAULTS.minTimeoutMillis());
+        assertTrue(SenderSettings.DEFAULTS.withAdaptiveTimeout(20).adaptive());
+        assertEquals(10, SenderSettings.DEFAULTS.withAdaptiveTimeout(20).withRetransmission(10, 2, 100, 3).minTimeoutMillis(),
+                "a shorter initial timeout pulls the minimum down with it");
+        SenderSettings fixed = SenderSettings.DEFAULTS.withRetransmission(1_000, 2, 60_000, 8);
+        assertFalse(fixed.adaptive(), "fixed settings stay fixed with a longer initial timeout");
+        assertEquals(1_000, fixed.minTimeoutMillis());
+    }
+
+    @Test
+    void fixedSchedule_sumsEveryTrysBaseTimeout_withinTheBound() {
+        SenderSettings s = new SenderSettings(100, 2.0, 400, 4, 0.25, 10_000, 10);
+        assertEquals(100 + 200 + 400 + 400, s.fixedScheduleMillis());
+        assertEquals(125 + 250 + 500 + 500, s.failureBoundMillis());
     }
 }

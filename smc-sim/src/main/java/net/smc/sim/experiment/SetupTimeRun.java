@@ -74,10 +74,28 @@ public final class SetupTimeRun {
         for (Address a : network.attached()) {
             busiest = Math.max(busiest, network.cpuMicros(a));
         }
-        report.accept(progress.levels() + charge.ledger().report());
+        report.accept(progress.levels() + charge.ledger().report() + retransmissions(sim));
         double setup = progress.complete() && progress.start >= 0 ? progress.end - progress.start : -1;
         return new SetupResult(generated.seats(), scheme, "sim", run, setup, charge.datagrams(), charge.bytes(),
                 busiest / 1_000.0, progress.seats.size());
+    }
+
+    /**
+     * A line on the team's critical messages: sent, retransmitted, and copies their receivers already
+     * had (a retransmission whose first copy arrived: its Ack was lost, or it went too soon).
+     */
+    static String retransmissions(TeamSimulation sim) {
+        long sent = 0;
+        long retransmitted = 0;
+        long duplicates = 0;
+        for (net.smc.core.cell.Cell c : sim.cells()) {
+            net.smc.core.comm.SenderCounters k = c.communication().sender().counters();
+            sent += k.sent();
+            retransmitted += k.retransmitted();
+            duplicates += k.duplicates();
+        }
+        return "team's critical messages: " + sent + " sent, " + retransmitted + " retransmitted, " + duplicates
+                + " copies received again\n";
     }
 
     /** Follows the cells' events: the commander's start, and each seat's first acceptance (by level of the tree). */

@@ -253,7 +253,20 @@ public final class InMemoryNetwork {
         long now = scheduler.nowMillis() * 1_000;
         long ready = node.charge(now, cpu.sendMicros(from, to, data));
         long out = node.transmit(ready, data.length, bytesPerSecond);
+        node.lastDepartureMicros = Math.max(node.lastDepartureMicros, out);
         return floorMillis(out) - scheduler.nowMillis();
+    }
+
+    /**
+     * Milliseconds from now until the last datagram {@code sender} sent leaves its node, as
+     * {@link #departureDelay} reckons it: 0 without a CPU model, or when it has left.
+     */
+    long backlogMillis(SimTransport sender) {
+        NodeCpu node = sender.cpu;
+        if (cpu == null || node == null || sender.isCrashed()) {
+            return 0;
+        }
+        return Math.max(0, floorMillis(node.lastDepartureMicros) - scheduler.nowMillis());
     }
 
     void detach(SimTransport transport) {

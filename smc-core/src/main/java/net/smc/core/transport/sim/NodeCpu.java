@@ -17,6 +17,8 @@ final class NodeCpu {
     final Deque<Waiting> inbox = new ArrayDeque<>();
     long busyUntilMicros;
     long transmitterFreeMicros;
+    /** When the last datagram this node sent leaves it (its CPU work done and, with a bandwidth, its last bit out). */
+    long lastDepartureMicros;
     long chargedMicros;
     /** Whether a datagram of the inbox is being worked on or is scheduled to be. */
     boolean draining;

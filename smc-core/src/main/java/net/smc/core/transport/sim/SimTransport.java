@@ -49,6 +49,11 @@ final class SimTransport implements Transport {
     }
 
     @Override
+    public long backlogMillis() {
+        return network.backlogMillis(this);
+    }
+
+    @Override
     public void setReceiver(Receiver receiver) {
         Objects.requireNonNull(receiver, "receiver");
         if (this.receiver != null) {
