@@ -68,11 +68,16 @@ final class Recruiter {
     /** The discovery replies decided on together: a burst, those that came while the role was loading. */
     private final ReplyBatches batches;
 
-    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover) {
+    /**
+     * @param rediscover     discovers again, within the rate limit of rediscoveries
+     * @param discoverAfresh discovers at once: when a manager's time of taking its own share only ends
+     */
+    Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover,
+              Runnable discoverAfresh) {
         this.rediscover = rediscover;
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
-        this.batches = new ReplyBatches(ctx, st, this::decide);
+        this.batches = new ReplyBatches(ctx, st, this::decide, discoverAfresh);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;

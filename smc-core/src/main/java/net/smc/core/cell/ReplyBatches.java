@@ -3,6 +3,7 @@ package net.smc.core.cell;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.Predicate;
 import java.util.stream.Stream;
@@ -31,6 +32,10 @@ final class ReplyBatches {
     private final TeamContext ctx;
     private final TeamState st;
     private final Decision decision;
+    /** Discovers at once, whatever the rate limit of rediscoveries: when the own share's time ends (Supervisor). */
+    private final Runnable discoverAfresh;
+    /** The task that ends this manager's time of taking its own share only ({@link #takeUpEarly}), or null. */
+    private Cancellable sharesEnd;
     /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
     private String checking;
     /** The vehicles whose replies came in the burst being taken up; decided on after it. */
@@ -38,10 +43,11 @@ final class ReplyBatches {
     /** The task that decides on {@link #burst}, or null when none is due. */
     private Cancellable burstDue;
 
-    ReplyBatches(TeamContext ctx, TeamState st, Decision decision) {
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Runnable discoverAfresh) {
         this.ctx = ctx;
         this.st = st;
         this.decision = decision;
+        this.discoverAfresh = discoverAfresh;
     }
 
     /**
@@ -134,10 +140,45 @@ final class ReplyBatches {
      */
     void takeUpEarly() {
         long now = ctx.clock().nowMillis();
+        beginOwnShare(now);
         List<String> early = st.earlyReplies.stream()
                 .filter(v -> now - answeredMillis(v, now) <= ctx.timing().comTimeoutMillis()).toList();
         st.earlyReplies.clear();
         decideOn(early, now);
+    }
+
+    /**
+     * The role has started: if it has siblings (managers of the same role, {@link SiblingOrder}), for
+     * {@link Timing#ownShareMillis} it takes only the free vehicles of its own share of the ring,
+     * which no sibling begins with, and leaves the others' shares to their owners; then, if a seat is
+     * still open, it discovers afresh. A vehicle of another's share is decided on only once it has
+     * answered after that time ({@link #decideOn}): its owner has had its time, and a vehicle taking
+     * a role answers no discovery, so such an answer is from a vehicle its owner left. Siblings used
+     * to decide on the answers as they came (a manager's own work on one answer keeps the next
+     * waiting, so a burst was mostly one answer): each took the quickest vehicles from every share,
+     * often a vehicle its owner was giving a seat to already (the assignment on the way behind other
+     * files on the owner's radio, or the role's files still coming), which refused. The policies
+     * still decide on every vehicle; only when they are asked changes.
+     */
+    private void beginOwnShare(long now) {
+        if (sharesEnd != null) {
+            sharesEnd.cancel();
+            sharesEnd = null;
+        }
+        int siblings = st.owned.keySet().stream()
+                .mapToInt(s -> ctx.slots().owner(s).map(m -> ctx.slots().optimal(m.role())).orElse(1)).max().orElse(1);
+        long span = ctx.timing().ownShareMillis(siblings);
+        if (span <= 0) {
+            st.ownShareUntilMillis = Long.MIN_VALUE / 2;
+            return;
+        }
+        st.ownShareUntilMillis = now + span;
+        sharesEnd = ctx.scheduler().schedule(span, () -> {
+            sharesEnd = null;
+            if (st.hasVacancy() && !st.recruitingHeld && !st.seats.isEmpty()) {
+                discoverAfresh.run();
+            }
+        });
     }
 
     /**
@@ -171,9 +212,16 @@ final class ReplyBatches {
      * checked (and as many first contacts made) as it takes to fill the open seats.
      */
     private void decideOn(List<String> vehicles, long now) {
-        for (String vehicle : siblingOrder(vehicles)) {
+        Optional<Seat> first = st.owned.keySet().stream().filter(st::open).min(ctx.slots()::compare);
+        if (first.isEmpty()) {
+            return;
+        }
+        for (String vehicle : SiblingOrder.of(vehicles, first.get(), ctx.slots())) {
             if (!st.hasVacancy()) {
                 return;
+            }
+            if (answeredMillis(vehicle, now) < st.ownShareUntilMillis && !SiblingOrder.inOwnShare(vehicle, first.get(), ctx.slots())) {
+                continue; // another sibling's share, and no answer since its owner had its time (beginOwnShare)
             }
             if (!check(vehicle)) {
                 continue;
@@ -185,12 +233,6 @@ final class ReplyBatches {
         }
     }
 
-    /** {@code vehicles} in this manager's order among the managers of its role ({@link SiblingOrder}). */
-    private List<String> siblingOrder(List<String> vehicles) {
-        return st.owned.keySet().stream().filter(st::open).min(ctx.slots()::compare)
-                .map(seat -> SiblingOrder.of(vehicles, seat, ctx.slots())).orElse(vehicles);
-    }
-
     /** The cell stops: replies not yet decided on are dropped. */
     void stop() {
         if (burstDue != null) {
@@ -198,5 +240,9 @@ final class ReplyBatches {
             burstDue = null;
         }
         burst.clear();
+        if (sharesEnd != null) {
+            sharesEnd.cancel();
+            sharesEnd = null;
+        }
     }
 }

@@ -177,7 +177,7 @@ final class TeamProtocol implements DiscoveryActions {
         this.counts = new TeamCounts(ctx, st);
         this.merge = new Merge(ctx, st, seating);
         this.backup = new BackupCommander(ctx, st, seating, counts, merge);
-        this.recruiter = new Recruiter(ctx, st, seating, counts, backup, this::rediscover);
+        this.recruiter = new Recruiter(ctx, st, seating, counts, backup, this::rediscover, this::discoverAfresh);
         this.reports = new Reports(ctx, st, counts, recruiter);
         this.assignee = new Assignee(ctx, st, seating, merge, this::discoverNow);
         this.membership = new Membership(ctx, st, seating, counts, backup, reports);
@@ -311,6 +311,11 @@ final class TeamProtocol implements DiscoveryActions {
     private void discoverNow() {
         recruiter.takeUpEarlyReplies();
         supervisor.roleStarted();
+    }
+
+    /** A manager's time of taking only its own share of the free vehicles has ended: it discovers at once. */
+    private void discoverAfresh() {
+        supervisor.discoverNow();
     }
 
     /** A seat this cell offered is open again: it discovers at once (at most four times a period). */
