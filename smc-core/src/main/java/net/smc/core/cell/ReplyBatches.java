@@ -148,7 +148,8 @@ final class ReplyBatches {
     }
 
     /**
-     * The role has started: if it has siblings (managers of the same role, {@link SiblingOrder}), for
+     * The role has started: if it has siblings (managers of the same role, {@link SiblingOrder}) and
+     * more than one open seat of a role ({@link #severalOfOneRole}), for
      * {@link Timing#ownShareMillis} it takes only the free vehicles of its own share of the ring,
      * which no sibling begins with, and leaves the others' shares to their owners; then, if a seat is
      * still open, it discovers afresh. A vehicle of another's share is decided on only once it has
@@ -168,7 +169,7 @@ final class ReplyBatches {
         int siblings = st.owned.keySet().stream()
                 .mapToInt(s -> ctx.slots().owner(s).map(m -> ctx.slots().optimal(m.role())).orElse(1)).max().orElse(1);
         long span = ctx.timing().ownShareMillis(siblings);
-        if (span <= 0) {
+        if (span <= 0 || !severalOfOneRole()) {
             st.ownShareUntilMillis = Long.MIN_VALUE / 2;
             return;
         }
@@ -179,6 +180,18 @@ final class ReplyBatches {
                 discoverAfresh.run();
             }
         });
+    }
+
+    /**
+     * Whether this manager has more than one open seat of some role: it gives them one after another,
+     * each assignment followed by its role's files on its radio, so its last assignments reach their
+     * vehicles tens of ms after it chose them, while its siblings, looking for vehicles of the same
+     * role, still hear them free. A manager with one seat of each role sends each assignment at once.
+     */
+    private boolean severalOfOneRole() {
+        Map<String, Integer> open = new java.util.HashMap<>();
+        st.owned.keySet().stream().filter(st::open).forEach(s -> open.merge(s.role(), 1, Integer::sum));
+        return open.values().stream().anyMatch(n -> n > 1);
     }
 
     /**
