@@ -1,5 +1,6 @@
 package net.smc.core.cell;
 
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -189,7 +190,7 @@ final class ReplyBatches {
      * role, still hear them free. A manager with one seat of each role sends each assignment at once.
      */
     private boolean severalOfOneRole() {
-        Map<String, Integer> open = new java.util.HashMap<>();
+        Map<String, Integer> open = new HashMap<>();
         st.owned.keySet().stream().filter(st::open).forEach(s -> open.merge(s.role(), 1, Integer::sum));
         return open.values().stream().anyMatch(n -> n > 1);
     }
