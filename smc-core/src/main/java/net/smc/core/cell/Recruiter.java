@@ -71,13 +71,18 @@ final class Recruiter {
     /** Told when a discovery reply gave the sender a round trip (Supervisor re-times its discovery repeat). */
     private final Runnable measured;
 
+    /**
+     * @param rediscover     discovers again, within the rate limit of rediscoveries
+     * @param measured       told when a discovery reply gave its sender a round trip
+     * @param discoverAfresh discovers at once: when a manager's time of taking its own share only ends
+     */
     Recruiter(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, BackupCommander backup, Runnable rediscover,
-              Runnable measured) {
+              Runnable measured, Runnable discoverAfresh) {
         this.rediscover = rediscover;
         this.measured = measured;
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
-        this.batches = new ReplyBatches(ctx, st, this::decide, measured);
+        this.batches = new ReplyBatches(ctx, st, this::decide, measured, discoverAfresh);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;

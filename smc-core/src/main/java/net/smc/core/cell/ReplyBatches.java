@@ -1,8 +1,10 @@
 package net.smc.core.cell;
 
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.Predicate;
 import java.util.stream.Stream;
@@ -33,6 +35,10 @@ final class ReplyBatches {
     private final Decision decision;
     /** Told when a checked reply gave the sender a round trip (Supervisor re-times its discovery repeat). */
     private final Runnable measured;
+    /** Discovers at once, whatever the rate limit of rediscoveries: when the own share's time ends (Supervisor). */
+    private final Runnable discoverAfresh;
+    /** The task that ends this manager's time of taking its own share only ({@link #takeUpEarly}), or null. */
+    private Cancellable sharesEnd;
     /** The vehicle whose held discovery reply is being checked now ({@link #check}), or null. */
     private String checking;
     /** The vehicles whose replies came in the burst being taken up; decided on after it. */
@@ -40,11 +46,12 @@ final class ReplyBatches {
     /** The task that decides on {@link #burst}, or null when none is due. */
     private Cancellable burstDue;
 
-    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Runnable measured) {
+    ReplyBatches(TeamContext ctx, TeamState st, Decision decision, Runnable measured, Runnable discoverAfresh) {
         this.measured = measured;
         this.ctx = ctx;
         this.st = st;
         this.decision = decision;
+        this.discoverAfresh = discoverAfresh;
     }
 
     /**
@@ -148,10 +155,58 @@ final class ReplyBatches {
      */
     void takeUpEarly() {
         long now = ctx.clock().nowMillis();
+        beginOwnShare(now);
         List<String> early = st.earlyReplies.stream()
                 .filter(v -> now - answeredMillis(v, now) <= ctx.timing().comTimeoutMillis()).toList();
         st.earlyReplies.clear();
         decideOn(early, now);
+    }
+
+    /**
+     * The role has started: if it has siblings (managers of the same role, {@link SiblingOrder}) and
+     * more than one open seat of a role ({@link #severalOfOneRole}), for
+     * {@link Timing#ownShareMillis} it takes only the free vehicles of its own share of the ring,
+     * which no sibling begins with, and leaves the others' shares to their owners; then, if a seat is
+     * still open, it discovers afresh. A vehicle of another's share is decided on only once it has
+     * answered after that time ({@link #decideOn}): its owner has had its time, and a vehicle taking
+     * a role answers no discovery, so such an answer is from a vehicle its owner left. Siblings used
+     * to decide on the answers as they came (a manager's own work on one answer keeps the next
+     * waiting, so a burst was mostly one answer): each took the quickest vehicles from every share,
+     * often a vehicle its owner was giving a seat to already (the assignment on the way behind other
+     * files on the owner's radio, or the role's files still coming), which refused. The policies
+     * still decide on every vehicle; only when they are asked changes.
+     */
+    private void beginOwnShare(long now) {
+        if (sharesEnd != null) {
+            sharesEnd.cancel();
+            sharesEnd = null;
+        }
+        int siblings = st.owned.keySet().stream()
+                .mapToInt(s -> ctx.slots().owner(s).map(m -> ctx.slots().optimal(m.role())).orElse(1)).max().orElse(1);
+        long span = ctx.timing().ownShareMillis(siblings);
+        if (span <= 0 || !severalOfOneRole()) {
+            st.ownShareUntilMillis = Long.MIN_VALUE / 2;
+            return;
+        }
+        st.ownShareUntilMillis = now + span;
+        sharesEnd = ctx.scheduler().schedule(span, () -> {
+            sharesEnd = null;
+            if (st.hasVacancy() && !st.recruitingHeld && !st.seats.isEmpty()) {
+                discoverAfresh.run();
+            }
+        });
+    }
+
+    /**
+     * Whether this manager has more than one open seat of some role: it gives them one after another,
+     * each assignment followed by its role's files on its radio, so its last assignments reach their
+     * vehicles tens of ms after it chose them, while its siblings, looking for vehicles of the same
+     * role, still hear them free. A manager with one seat of each role sends each assignment at once.
+     */
+    private boolean severalOfOneRole() {
+        Map<String, Integer> open = new HashMap<>();
+        st.owned.keySet().stream().filter(st::open).forEach(s -> open.merge(s.role(), 1, Integer::sum));
+        return open.values().stream().anyMatch(n -> n > 1);
     }
 
     /**
@@ -185,9 +240,16 @@ final class ReplyBatches {
      * checked (and as many first contacts made) as it takes to fill the open seats.
      */
     private void decideOn(List<String> vehicles, long now) {
-        for (String vehicle : siblingOrder(vehicles)) {
+        Optional<Seat> first = st.owned.keySet().stream().filter(st::open).min(ctx.slots()::compare);
+        if (first.isEmpty()) {
+            return;
+        }
+        for (String vehicle : SiblingOrder.of(vehicles, first.get(), ctx.slots())) {
             if (!st.hasVacancy()) {
                 return;
+            }
+            if (answeredMillis(vehicle, now) < st.ownShareUntilMillis && !SiblingOrder.inOwnShare(vehicle, first.get(), ctx.slots())) {
+                continue; // another sibling's share, and no answer since its owner had its time (beginOwnShare)
             }
             if (!check(vehicle)) {
                 continue;
@@ -199,12 +261,6 @@ final class ReplyBatches {
         }
     }
 
-    /** {@code vehicles} in this manager's order among the managers of its role ({@link SiblingOrder}). */
-    private List<String> siblingOrder(List<String> vehicles) {
-        return st.owned.keySet().stream().filter(st::open).min(ctx.slots()::compare)
-                .map(seat -> SiblingOrder.of(vehicles, seat, ctx.slots())).orElse(vehicles);
-    }
-
     /** The cell stops: replies not yet decided on are dropped. */
     void stop() {
         if (burstDue != null) {
@@ -212,5 +268,9 @@ final class ReplyBatches {
             burstDue = null;
         }
         burst.clear();
+        if (sharesEnd != null) {
+            sharesEnd.cancel();
+            sharesEnd = null;
+        }
     }
 }

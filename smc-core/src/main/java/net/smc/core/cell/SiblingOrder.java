@@ -41,6 +41,24 @@ final class SiblingOrder {
         return ordered;
     }
 
+    /**
+     * Whether {@code vehicle} lies in the share of the ring of the manager owning {@code openSeat}:
+     * the share no sibling begins with. A manager without siblings owns the whole ring.
+     */
+    static boolean inOwnShare(String vehicle, Seat openSeat, Slots slots) {
+        return slots.owner(openSeat).map(manager -> shareOf(vehicle, slots.optimal(manager.role())) == manager.slot())
+                .orElse(true);
+    }
+
+    /** The sibling seat, of {@code siblings}, in whose share of the ring {@code vehicle} lies. */
+    static int shareOf(String vehicle, int siblings) {
+        if (siblings <= 1) {
+            return 0;
+        }
+        long share = Long.divideUnsigned(-1L, siblings);
+        return (int) Math.min(siblings - 1, Long.divideUnsigned(key(vehicle) - Long.MIN_VALUE, share));
+    }
+
     /** Where the manager of sibling seat {@code slot} of {@code siblings} begins on the ring of keys: its own share's start. */
     static long startOf(int slot, int siblings) {
         long share = Long.divideUnsigned(-1L, Math.max(1, siblings));

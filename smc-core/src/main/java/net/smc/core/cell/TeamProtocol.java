@@ -177,7 +177,8 @@ final class TeamProtocol implements DiscoveryActions {
         this.counts = new TeamCounts(ctx, st);
         this.merge = new Merge(ctx, st, seating);
         this.backup = new BackupCommander(ctx, st, seating, counts, merge);
-        this.recruiter = new Recruiter(ctx, st, seating, counts, backup, this::rediscover, this::roundTripMeasured);
+        this.recruiter = new Recruiter(ctx, st, seating, counts, backup, this::rediscover, this::roundTripMeasured,
+                this::discoverAfresh);
         this.reports = new Reports(ctx, st, counts, recruiter);
         this.assignee = new Assignee(ctx, st, seating, merge, this::discoverNow);
         this.membership = new Membership(ctx, st, seating, counts, backup, reports);
@@ -316,6 +317,11 @@ final class TeamProtocol implements DiscoveryActions {
     /** A discovery reply gave a round trip: the discovery repeat follows the cell's estimate. */
     private void roundTripMeasured() {
         supervisor.roundTripMeasured();
+    }
+
+    /** A manager's time of taking only its own share of the free vehicles has ended: it discovers at once. */
+    private void discoverAfresh() {
+        supervisor.discoverNow();
     }
 
     /** A seat this cell offered is open again: it discovers at once (at most four times a period). */

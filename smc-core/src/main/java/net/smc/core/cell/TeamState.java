@@ -106,6 +106,12 @@ final class TeamState {
      */
     long earlyDiscoveryMillis = Long.MIN_VALUE / 2;
     final Set<String> earlyReplies = new LinkedHashSet<>();
+    /**
+     * The end of this manager's time of taking only its own share of the ring (a short time after
+     * its role started; far in the past: none): a vehicle of a sibling's share is decided on only once
+     * it has answered since (ReplyBatches.beginOwnShare).
+     */
+    long ownShareUntilMillis = Long.MIN_VALUE / 2;
     /** Free vehicles this cell's policies passed over when they were discovered, by vehicle (Recruiter). */
     final Map<String, Refusal> refused = new HashMap<>();
     final Map<String, List<Object>> handover = new HashMap<>();

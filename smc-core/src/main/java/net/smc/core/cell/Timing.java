@@ -125,6 +125,24 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
         return 4 * failureTimeoutMillis;
     }
 
+    /**
+     * How long a manager with {@code siblings} managers of its role (itself included) takes, once
+     * its role has started, only the free vehicles of its own share of the ring (ReplyBatches): a
+     * hundredth of {@code comTimeout} per sibling, 50 ms for ten siblings and a 500 ms period, 10 ms
+     * for two. The siblings' parent sends them their assignments and files one after another, so
+     * they start spread over a time that grows with their number, and each gives its seats one after
+     * another; the time is short against a heartbeat period, and never longer than the first
+     * retransmission timeout of the critical messages (100 ms), so a manager whose share is short of
+     * vehicles waits little before it takes the spare ones of the others' shares. 0 (no such time)
+     * for a manager without siblings.
+     */
+    public long ownShareMillis(int siblings) {
+        if (siblings < 1) {
+            throw new IllegalArgumentException("siblings is " + siblings + "; a manager counts itself, so it is 1 or more");
+        }
+        return siblings == 1 ? 0 : Math.min(siblings * comTimeoutMillis / 100, senderSettings().initialTimeoutMillis());
+    }
+
     public long leaseMillis() {
         return failureTimeoutMillis - comTimeoutMillis / 2;
     }

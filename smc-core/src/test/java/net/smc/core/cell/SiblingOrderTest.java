@@ -36,6 +36,40 @@ class SiblingOrderTest {
     }
 
     @Test
+    void everyVehicleLiesInOneSiblingsShare_theOneWhoseOrderBeginsWithIt() {
+        List<String> heard = new ArrayList<>();
+        for (int i = 0; i < 40; i++) {
+            heard.add("uav-" + i);
+        }
+        for (String vehicle : heard) {
+            boolean first = SiblingOrder.inOwnShare(vehicle, new Seat("hdetector", 0), distributed);
+            boolean second = SiblingOrder.inOwnShare(vehicle, new Seat("hdetector", 1), distributed);
+            assertTrue(first != second, vehicle);
+            assertEquals(first ? 0 : 1, SiblingOrder.shareOf(vehicle, 2));
+        }
+        // Surveyor 0's order begins with its own share's vehicles, then the others'.
+        List<String> order = SiblingOrder.of(heard, new Seat("relay", 0), distributed);
+        int own = (int) heard.stream().filter(v -> SiblingOrder.shareOf(v, 2) == 0).count();
+        assertTrue(own > 0 && own < heard.size(), "both shares hold some of 40 vehicles");
+        assertTrue(order.subList(0, own).stream().allMatch(v -> SiblingOrder.inOwnShare(v, new Seat("relay", 0), distributed)));
+        assertTrue(order.subList(own, heard.size()).stream().noneMatch(v -> SiblingOrder.inOwnShare(v, new Seat("relay", 0), distributed)));
+    }
+
+    @Test
+    void shares_splitTheRingEvenly_andAManagerWithoutSiblingsOwnsItAll() {
+        int[] counts = new int[10];
+        for (int i = 0; i < 10_000; i++) {
+            counts[SiblingOrder.shareOf("b0l3n" + i, 10)]++;
+        }
+        for (int c : counts) {
+            assertTrue(c > 850 && c < 1150, () -> java.util.Arrays.toString(counts));
+        }
+        assertEquals(0, SiblingOrder.shareOf("uav-7", 1));
+        Slots centralised = new Slots(Missions.centralised(), Scheme.CENTRALISED);
+        assertTrue(HEARD.stream().allMatch(v -> SiblingOrder.inOwnShare(v, new Seat("relay", 1), centralised)));
+    }
+
+    @Test
     void idsThatDifferOnlyInTheirLastCharacter_spreadRoundTheRing() {
         Set<Long> eighths = new HashSet<>();
         for (int i = 0; i < 8; i++) {

@@ -74,7 +74,7 @@ public final class SetupTimeRun {
         for (Address a : network.attached()) {
             busiest = Math.max(busiest, network.cpuMicros(a));
         }
-        report.accept(progress.levels() + charge.ledger().report() + retransmissions(sim));
+        report.accept(progress.levels() + progress.assignments() + charge.ledger().report() + retransmissions(sim));
         double setup = progress.complete() && progress.start >= 0 ? progress.end - progress.start : -1;
         return new SetupResult(generated.seats(), scheme, "sim", run, setup, charge.datagrams(), charge.bytes(),
                 busiest / 1_000.0, progress.seats.size());
@@ -107,6 +107,9 @@ public final class SetupTimeRun {
         final TreeMap<Integer, long[]> levels = new TreeMap<>();
         long start = -1;
         long end = -1;
+        /** Role assignments sent, and those that failed by why (vehicle names left out). */
+        int assignments;
+        final TreeMap<String, Integer> failures = new TreeMap<>();
 
         Progress(int needed, Map<String, RoleType> roles) {
             this.needed = needed;
@@ -117,6 +120,12 @@ public final class SetupTimeRun {
         public void accept(CellEvent e) {
             if (e.kind() == CellEvent.Kind.COMMANDING && e.vehicle().equals(GeneratedMission.COMMANDER) && start < 0) {
                 start = e.timeMillis();
+            } else if (e.kind() == CellEvent.Kind.ASSIGNING) {
+                assignments++;
+            } else if (e.kind() == CellEvent.Kind.ASSIGNMENT_FAILED) {
+                int colon = e.detail().indexOf(": ");
+                String why = colon < 0 ? e.detail() : e.detail().substring(colon + 2);
+                failures.merge(why.replaceAll("'[^']*'", "'…'"), 1, Integer::sum);
             } else if (e.kind() == CellEvent.Kind.ACCEPTED) {
                 int space = e.detail().indexOf(' ');
                 String seat = space < 0 ? e.detail() : e.detail().substring(0, space);
@@ -136,6 +145,19 @@ public final class SetupTimeRun {
                 long[] span = levels.computeIfAbsent(role.level(), l -> new long[] {at, at});
                 span[1] = at;
             }
+        }
+
+        /** One line: the role assignments sent for the seats, and those that failed, by why. */
+        String assignments() {
+            StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "role assignments %d for %d seats", assignments, needed));
+            int failed = failures.values().stream().mapToInt(Integer::intValue).sum();
+            if (failed > 0) {
+                s.append(String.format(Locale.ROOT, "; %d failed:", failed));
+                failures.entrySet().stream().sorted(Map.Entry.<String, Integer>comparingByValue().reversed())
+                        .forEach(f -> s.append(String.format(Locale.ROOT, " %d %s;", f.getValue(), f.getKey())));
+                s.setLength(s.length() - 1);
+            }
+            return s.append('\n').toString();
         }
 
         boolean complete() {
