@@ -76,6 +76,17 @@ public final class WorldPainter {
             }
         }
         List<SimRobot> robots = world.robots();
+        // The names first: a robot is drawn over another's name, never hidden by it.
+        for (int i = 0; i < robots.size(); i++) {
+            SimRobot robot = robots.get(i);
+            String role = scene.roles().label(robot.id());
+            double x = v.x(robot.x()) + v.px(0.22);
+            double y = v.y(robot.y()) - v.px(0.22);
+            text.boldLabel(g, robot.id(), x, y, Palette.robot(i).darker());
+            if (role != null && !role.isEmpty()) {
+                text.label(g, role, x, y - text.size() - 1, Palette.robot(i).darker());
+            }
+        }
         for (int i = 0; i < robots.size(); i++) {
             robot(g, v, robots.get(i), Palette.robot(i));
         }
@@ -96,16 +107,6 @@ public final class WorldPainter {
             if (mark instanceof Mark.Cross cross) {
                 cross(g, v, cross.x(), cross.y(), 0.2);
                 text.label(g, cross.label(), v.x(cross.x()) + v.px(0.22), v.y(cross.y()) + v.px(0.22) + text.size(), Palette.MARK);
-            }
-        }
-        for (int i = 0; i < robots.size(); i++) {
-            SimRobot robot = robots.get(i);
-            String role = scene.roles().label(robot.id());
-            double x = v.x(robot.x()) + v.px(0.22);
-            double y = v.y(robot.y()) - v.px(0.22);
-            text.boldLabel(g, robot.id(), x, y, Palette.robot(i).darker());
-            if (role != null && !role.isEmpty()) {
-                text.label(g, role, x, y - text.size() - 1, Palette.robot(i).darker());
             }
         }
         if (show.legend()) {

@@ -39,7 +39,9 @@ import net.smc.sim.map.Zone;
  * passing beside it have freed it since. Told where a failed teammate's body lies
  * ({@link #pushAside}), it plans with that body's cells taken for free and pushes the body aside
  * when it is in the way (the path follower drives on slowly into it): a robot that died in a
- * doorway would otherwise seal the rooms behind it. A target is given up when the robot, driving,
+ * doorway would otherwise seal the rooms behind it. A body that gives way is known from then on where
+ * it was pushed to ({@link PathFollower#takePush}), so that a body pushed into a doorway is pushed on,
+ * not taken for a wall. A target is given up when the robot, driving,
  * stays within 5 cm for {@link #STALL_SECONDS} or within {@link #CREEP_MOVED} for
  * {@link #CREEP_SECONDS}: the second tells a robot pushing into a body that does not give, whose
  * position jitters by a few centimetres.
@@ -287,6 +289,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
             return;
         }
         PathFollower.Status st = follower.step();
+        follower.takePush().ifPresent(p -> bodies.moved(p.body(), p.now()));
         switch (st) {
             case ARRIVED, IDLE -> {
                 // Standing on it, the robot saw what it could: what is still unknown there is hidden.

@@ -33,6 +33,18 @@ final class FailedBodies {
         return bodies.add(body);
     }
 
+    /**
+     * A body the robot pushed ({@code body}, as it was known) lies at {@code now}: its cells are
+     * taken for the body there, no longer where it was. A body not known (told of again meanwhile
+     * at another place) changes nothing.
+     */
+    void moved(Point body, Point now) {
+        int i = bodies.indexOf(body);
+        if (i >= 0) {
+            bodies.set(i, now);
+        }
+    }
+
     boolean isEmpty() {
         return bodies.isEmpty();
     }

@@ -204,7 +204,9 @@ public final class Navigator extends RobotTask implements NavigatorI, Handover {
                 follower.follow(path.get(), map.resolution() / 2);
             }
         }
-        switch (follower.step()) {
+        PathFollower.Status status = follower.step();
+        follower.takePush().ifPresent(p -> bodies.moved(p.body(), p.now()));
+        switch (status) {
             case ARRIVED -> {
                 Point reached = goal;
                 goal = null;

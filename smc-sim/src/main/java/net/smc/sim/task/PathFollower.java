@@ -26,7 +26,16 @@ final class PathFollower {
     private final double stopDistance;
     private final List<Point> path = new ArrayList<>();
     private double arriveTolerance;
-    private List<Point> pushable = List.of();
+    private final List<Point> pushable = new java.util.ArrayList<>();
+    /** The body the last step pushed and where it was taken to lie then, or null ({@link #takePush}). */
+    private Push pushed;
+
+    /**
+     * A push: the body as the robot knew it ({@code body}) lies, as far as the robot can tell,
+     * just in front of it ({@code now}): what its front sensors read, a body's half-width further.
+     */
+    record Push(Point body, Point now) {
+    }
 
     PathFollower(RobotHardware robot, double waypointTolerance, double stopDistance) {
         this.robot = robot;
@@ -46,7 +55,15 @@ final class PathFollower {
      * {@link #PUSH_SPEED} of its top speed instead.
      */
     void pushable(List<Point> bodies) {
-        pushable = List.copyOf(bodies);
+        pushable.clear();
+        pushable.addAll(bodies);
+    }
+
+    /** The push of the last step, if it pushed, and forgets it: where the body it pushed now lies. */
+    java.util.Optional<Push> takePush() {
+        Push p = pushed;
+        pushed = null;
+        return java.util.Optional.ofNullable(p);
     }
 
     /** How near a pushable body the robot must be for what is in front of it to be taken for that body, m. */
@@ -54,13 +71,28 @@ final class PathFollower {
     /** The fraction of its top speed at which the robot pushes. */
     static final double PUSH_SPEED = 0.3;
 
-    private boolean besidePushable(Pose pose) {
-        for (Point b : pushable) {
-            if (b.distanceTo(pose.x(), pose.y()) <= PUSH_NEAR) {
-                return true;
+    /** Half the width of a robot's body, m: from the front sensors to a pushed body's centre, and from the robot's centre to its front. */
+    static final double HALF_BODY = 0.16;
+    /** The farthest a pushed body is taken to have moved from where it was known in one step, m. */
+    static final double MAX_SLIDE = FailedBodies.BODY_REACH;
+    /** How far the robot must have moved on while pushing for what is in front to be taken to have given way, m. */
+    static final double GAVE_WAY = 0.05;
+    /** Where the robot stood when it began the push under way (or last moved the body), or null when not pushing. */
+    private Point pushStart;
+    private boolean pushing;
+
+    /** The index of the nearest pushable body within {@link #PUSH_NEAR} of the robot, or -1. */
+    private int besidePushable(Pose pose) {
+        int nearest = -1;
+        double best = PUSH_NEAR;
+        for (int i = 0; i < pushable.size(); i++) {
+            double d = pushable.get(i).distanceTo(pose.x(), pose.y());
+            if (d <= best) {
+                best = d;
+                nearest = i;
             }
         }
-        return false;
+        return nearest;
     }
 
     void clear() {
@@ -92,6 +124,15 @@ final class PathFollower {
     }
 
     Status step() {
+        Status status = move();
+        if (!pushing) {
+            pushStart = null;
+        }
+        pushing = false;
+        return status;
+    }
+
+    private Status move() {
         Drive drive = robot.drive();
         if (path.isEmpty()) {
             return Status.IDLE;
@@ -110,12 +151,28 @@ final class PathFollower {
         double error = angleDiff(Math.atan2(target.y() - pose.y(), target.x() - pose.x()), pose.heading());
         double max = drive.maxSpeed();
         double forward = Math.abs(error) > IN_PLACE ? 0 : max * 0.8 * Math.cos(error) * Math.min(1, distance / 0.5 + 0.2);
-        if (forward > 0 && frontClearance(robot) < stopDistance) {
-            if (!besidePushable(pose)) {
+        double front = frontClearance(robot);
+        if (forward > 0 && front < stopDistance) {
+            int body = besidePushable(pose);
+            if (body < 0) {
                 drive.stop();
                 return Status.OBSTRUCTED;
             }
             forward = Math.min(forward, max * PUSH_SPEED);
+            // What is in front is taken for the body: it lies there now, wherever it lay before.
+            double ahead = HALF_BODY + front + HALF_BODY;
+            Point now = new Point(pose.x() + Math.cos(pose.heading()) * ahead, pose.y() + Math.sin(pose.heading()) * ahead);
+            // Only what gives way is the body: the robot pushing has moved on since it began to push
+            // (into a jamb or a wall it stands still), and the body slides, it does not jump.
+            if (pushStart == null) {
+                pushStart = new Point(pose.x(), pose.y());
+            } else if (pushStart.distanceTo(pose.x(), pose.y()) >= GAVE_WAY
+                    && now.distanceTo(pushable.get(body).x(), pushable.get(body).y()) <= MAX_SLIDE) {
+                pushed = new Push(pushable.get(body), now);
+                pushable.set(body, now);
+                pushStart = new Point(pose.x(), pose.y());
+            }
+            pushing = true;
         }
         double turn = TURN_GAIN * error;
         double half = drive.wheelBase() / 2;

@@ -129,8 +129,7 @@ class ReconnaissanceScenarioTest {
         assertEquals(run.hazardMap().isPresent() ? reported.size() : 0, reported.size());
         assertTrue(reported.size() >= outcome.hazardsFound().size(), "a diamond for every hazard found");
         for (Object[] p : reported) {
-            // Within 3 pixels of its centre (the diamond reaches 6 or more): a robot's name, drawn
-            // last, may cover the very centre when the robot stands beside the hazard.
+            // Within 3 pixels of its centre (the diamond reaches 6 or more).
             Color c = Pixels.at(image, v, (double) p[0], (double) p[1]);
             assertTrue(Pixels.nearby(image, v, (double) p[0], (double) p[1], 3, Palette.FOUND, 12),
                     "a found hazard's diamond at " + p[0] + "," + p[1] + ": " + Pixels.hex(c) + " at its centre");

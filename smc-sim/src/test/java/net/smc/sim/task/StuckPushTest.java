@@ -16,6 +16,7 @@ import net.smc.sim.hardware.ProximitySensors;
 import net.smc.sim.hardware.Radio;
 import net.smc.sim.hardware.RobotHardware;
 import net.smc.sim.map.OccupancyGrid;
+import net.smc.sim.map.Point;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -71,6 +72,67 @@ class StuckPushTest {
         assertFalse(Double.isNaN(gaveUpAt), "still pushing at " + world.time + " s, since " + pushingSince + " s");
         assertTrue(gaveUpAt - pushingSince <= Explorer.CREEP_SECONDS + 5,
                 "gave up " + (gaveUpAt - pushingSince) + " s after it began to push");
+    }
+
+    /**
+     * A body that gives way slides ahead of the robot pushing it: the Explorer then knows it where it
+     * was pushed to, not where it was told it lay. (A body pushed into a doorway and still known at
+     * its old place sealed the room behind it for the rest of a reconnaissance: its new cells read
+     * as a wall, and no way led in.) Pushing into what does not give moves no body.
+     */
+    @Test
+    void aBodyThatGivesWay_isKnownWhereItWasPushedTo() {
+        FakeWorld world = new FakeWorld(8, 4);
+        double half = 0.16;
+        double[] body = {2.56, 2.125};
+        world.box(body[0] - half, body[1] - half, body[0] + half, body[1] + half);
+        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+        OccupancyGrid map = new OccupancyGrid(0, 0, 8, 4, 0.25);
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c <= 12; c++) {
+                var p = map.centre(c, r);
+                for (int i = 0; i < 3; i++) {
+                    if (Math.abs(p.x() - body[0]) < 0.3 && Math.abs(p.y() - body[1]) < 0.3) {
+                        map.markOccupied(p.x(), p.y());
+                    } else {
+                        map.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        Explorer explorer = new Explorer(robot, map);
+        explorer.pushAside(body[0], body[1]);
+        explorer.start();
+        explorer.explore();
+        for (int i = 0; i < 200; i++) {
+            world.step(0.05);
+            // The body gives way: whatever the robot's front reaches, it slides east, 1 m at most.
+            if (robot.x + 0.15 + 0.03 >= body[0] - half && body[0] < 3.56) {
+                body[0] += 0.02;
+                world.boxes.set(0, new FakeWorld.Box(body[0] - half, body[1] - half, body[0] + half, body[1] + half));
+            }
+        }
+        assertTrue(body[0] > 2.56 + 0.5, "the robot pushed the body east: it lies at x " + body[0]);
+        assertEquals(1, explorer.bodies().size(), "one body: " + explorer.bodies());
+        double known = explorer.bodies().get(0).x();
+        assertTrue(Math.abs(known - body[0]) < 0.3, "the body is known at x " + known + ", it lies at x " + body[0]);
+    }
+
+    @Test
+    void aBodyThatDoesNotGive_staysWhereItWasKnown() {
+        FakeWorld world = sealedWorld();
+        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+        Explorer explorer = new Explorer(new Jittering(robot, world), sealedMap());
+        explorer.pushAside(4.125, 2.125);
+        explorer.start();
+        explorer.explore();
+        world.run(20);
+        assertTrue(robot.x > 3.6, "the robot reached the body: x " + robot.x);
+        // Its pose jitters by up to 8 cm (the position fix), so the body may be taken to lie as far
+        // off, no further: the robot never gets on, and the body does not slide.
+        assertEquals(1, explorer.bodies().size(), "one body: " + explorer.bodies());
+        Point known = explorer.bodies().get(0);
+        assertTrue(known.distanceTo(4.125, 2.125) <= 0.1, "the wedged body is known at " + known);
     }
 
     @Test
