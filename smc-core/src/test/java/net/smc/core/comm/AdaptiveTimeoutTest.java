@@ -3,12 +3,13 @@ package net.smc.core.comm;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 
 import net.smc.core.message.CapabilityRequest;
-import net.smc.core.message.PolicyReply;
+import net.smc.core.message.RoleEvent;
 import net.smc.core.transport.sim.CpuModel;
 import net.smc.core.transport.sim.LinkProfile;
 
@@ -107,7 +108,8 @@ class AdaptiveTimeoutTest {
         SimNet net = net(ADAPTIVE);
         Peer[] p = slowRadio(net);
         MessageSender s = p[0].manager.sender();
-        p[0].send(p[1], new PolicyReply(1, "file:/x.p2", 1, "x".repeat(1_200))); // one datagram, about 130 ms of radio
+        // A role event of long strings: a policy text this long would go deflated, far shorter.
+        p[0].send(p[1], new RoleEvent("relay", "bulk", List.of("x".repeat(1_180)))); // one datagram, about 130 ms of radio
         long sent = net.scheduler.nowMillis();
         long id = p[0].send(p[2], new CapabilityRequest("role"));
         net.awaitUntil(() -> p[0].settled.get() == 2, 5_000);
@@ -123,7 +125,7 @@ class AdaptiveTimeoutTest {
     void behindADeepQueue_noTryWaitsLongerThanTheFixedTimeout() {
         SimNet net = net(ADAPTIVE);
         Peer[] p = slowRadio(net);
-        p[0].send(p[1], new PolicyReply(1, "file:/x.p2", 1, "x".repeat(3_000))); // three datagrams, about 320 ms of radio
+        p[0].send(p[1], new RoleEvent("relay", "bulk", List.of("x".repeat(2_980)))); // three datagrams, about 320 ms of radio
         long id = p[0].send(p[2], new CapabilityRequest("role"));
         net.scheduler.runUntil(() -> false, net.scheduler.nowMillis() + 201);
         assertEquals(2, p[0].manager.sender().counters().retransmitted(),

@@ -177,14 +177,15 @@ class LevelLatencyTest {
      * (the rediscovery rate limit: 125 ms). A rediscovery asked for while its only open seat was
      * being given to another vehicle sends nothing and does not count against that limit; when it
      * did, a refusal soon after waited for the limit, or for the next tick. 50 roles on the radio
-     * model with the costs of the README's table, seeds 3-8: the case comes up several times.
+     * model with the costs of the README's table, seeds 3-20: the case comes up several times (since
+     * siblings take their own share of the free vehicles first, refusals are rarer).
      */
     @Test
     void aRefusedSeatIsLookedForAgainAtOnceUnlessADiscoveryWasSentWithinTheRateLimit() throws Exception {
         GeneratedMission g = MissionGenerator.write(TreeShape.of(50, 4), dir, Project.bootEvents());
         Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
         int looked = 0;
-        for (long seed = 3; seed <= 8; seed++) {
+        for (long seed = 3; seed <= 20; seed++) {
             List<CellEvent> events = new ArrayList<>();
             TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
                     .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(RadioNetwork.ADHOC_80211.link())
