@@ -49,14 +49,20 @@ class StuckPushTest {
         return map;
     }
 
-    @Test
-    void aRobotPushingABodyThatDoesNotGive_givesItsFrontierUp_thoughItsPoseJitters() {
-        FakeWorld world = sealedWorld();
-        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+    /** An Explorer on {@code robot}, its pose jittering, told of the body wedged in the doorway, exploring. */
+    private static Explorer exploringTowardsTheWedgedBody(FakeWorld world, FakeRobot robot) {
         Explorer explorer = new Explorer(new Jittering(robot, world), sealedMap());
         explorer.pushAside(4.125, 2.125);
         explorer.start();
         explorer.explore();
+        return explorer;
+    }
+
+    @Test
+    void aRobotPushingABodyThatDoesNotGive_givesItsFrontierUp_thoughItsPoseJitters() {
+        FakeWorld world = sealedWorld();
+        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+        Explorer explorer = exploringTowardsTheWedgedBody(world, robot);
         double pushingSince = Double.NaN;
         double gaveUpAt = Double.NaN;
         while (world.time < 60 && Double.isNaN(gaveUpAt)) {
@@ -122,10 +128,7 @@ class StuckPushTest {
     void aBodyThatDoesNotGive_staysWhereItWasKnown() {
         FakeWorld world = sealedWorld();
         FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
-        Explorer explorer = new Explorer(new Jittering(robot, world), sealedMap());
-        explorer.pushAside(4.125, 2.125);
-        explorer.start();
-        explorer.explore();
+        Explorer explorer = exploringTowardsTheWedgedBody(world, robot);
         world.run(20);
         assertTrue(robot.x > 3.6, "the robot reached the body: x " + robot.x);
         // Its pose jitters by up to 8 cm (the position fix), so the body may be taken to lie as far
