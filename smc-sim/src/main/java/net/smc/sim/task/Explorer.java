@@ -319,7 +319,14 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
      * cells taken for free ({@link FailedBodies#without}), and the path follower may push them.
      */
     private boolean chooseTarget(Pose pose) {
-        boolean push = !bodies.isEmpty();
+        // Around the bodies first; through them, pushing, only when that leaves no frontier open.
+        if (chooseTarget(pose, false)) {
+            return true;
+        }
+        return !bodies.isEmpty() && chooseTarget(pose, true);
+    }
+
+    private boolean chooseTarget(Pose pose, boolean push) {
         OccupancyGrid grid = push ? bodies.without(map) : map;
         for (PathPlanner p : List.of(planner, narrow)) {
             Set<Integer> failed = new HashSet<>();
@@ -341,7 +348,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
                     return true;
                 }
                 failed.add(next.get());
-                if (p == narrow) {
+                if (p == narrow && (push || bodies.isEmpty())) {
                     setAside.add(next.get(), now);
                 }
             }

@@ -80,25 +80,16 @@ class StuckPushTest {
                 "gave up " + (gaveUpAt - pushingSince) + " s after it began to push");
     }
 
-    /**
-     * A body that gives way slides ahead of the robot pushing it: the Explorer then knows it where it
-     * was pushed to, not where it was told it lay. (A body pushed into a doorway and still known at
-     * its old place sealed the room behind it for the rest of a reconnaissance: its new cells read
-     * as a wall, and no way led in.) Pushing into what does not give moves no body.
-     */
-    @Test
-    void aBodyThatGivesWay_isKnownWhereItWasPushedTo() {
-        FakeWorld world = new FakeWorld(8, 4);
-        double half = 0.16;
-        double[] body = {2.56, 2.125};
-        world.box(body[0] - half, body[1] - half, body[0] + half, body[1] + half);
-        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+    private static final double HALF = 0.16;
+
+    /** The map of {@code world} known up to x 3.1 (its boxes occupied, the rest free), unknown east of that. */
+    private static OccupancyGrid knownWest(FakeWorld world) {
         OccupancyGrid map = new OccupancyGrid(0, 0, 8, 4, 0.25);
         for (int r = 0; r < map.rows(); r++) {
             for (int c = 0; c <= 12; c++) {
                 var p = map.centre(c, r);
                 for (int i = 0; i < 3; i++) {
-                    if (Math.abs(p.x() - body[0]) < 0.3 && Math.abs(p.y() - body[1]) < 0.3) {
+                    if (world.blocked(p.x(), p.y(), 0.05)) {
                         map.markOccupied(p.x(), p.y());
                     } else {
                         map.markFree(p.x(), p.y());
@@ -106,22 +97,80 @@ class StuckPushTest {
                 }
             }
         }
+        return map;
+    }
+
+    /** Steps {@code world} for {@code seconds}; the body (the last box) gives way east to a robot touching it, 1 m at most. */
+    private static void pushableBody(FakeWorld world, FakeRobot robot, double[] body, double seconds, double[] touched) {
+        for (double t = 0; t < seconds; t += 0.05) {
+            world.step(0.05);
+            int last = world.boxes.size() - 1;
+            if (world.boxes.get(last).near(robot.x, robot.y, 0.15 + 0.03)) {
+                touched[0]++;
+                if (body[0] < 3.56 && robot.x < body[0]) {
+                    body[0] += 0.02;
+                    world.boxes.set(last, new FakeWorld.Box(body[0] - HALF, body[1] - HALF, body[0] + HALF, body[1] + HALF));
+                }
+            }
+        }
+    }
+
+    /**
+     * A body that gives way slides ahead of the robot pushing it: the Explorer then knows it where it
+     * was pushed to, not where it was told it lay. (A body pushed into a doorway and still known at
+     * its old place sealed the room behind it for the rest of a reconnaissance: its new cells read
+     * as a wall, and no way led in.)
+     */
+    @Test
+    void aBodyThatGivesWay_isKnownWhereItWasPushedTo() {
+        // The doorway of the sealed world, filled by a body that gives way this time.
+        double[] body = {4.125, 2.125};
+        FakeWorld world = new FakeWorld(8, 4).box(4, 0, 4.25, 1.75).box(4, 2.5, 4.25, 4)
+                .box(body[0] - 0.125, 1.75, body[0] + 0.125, 2.5);
+        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+        // Known as far as x 5.25, a metre beyond the doorway: the robot must push the body through to get there.
+        OccupancyGrid map = sealedMap();
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 17; c <= 20; c++) {
+                var p = map.centre(c, r);
+                for (int i = 0; i < 3; i++) {
+                    map.markFree(p.x(), p.y());
+                }
+            }
+        }
         Explorer explorer = new Explorer(robot, map);
         explorer.pushAside(body[0], body[1]);
         explorer.start();
         explorer.explore();
-        for (int i = 0; i < 200; i++) {
+        for (double t = 0; t < 60 && body[0] < 5.1; t += 0.05) {
             world.step(0.05);
-            // The body gives way: whatever the robot's front reaches, it slides east, 1 m at most.
-            if (robot.x + 0.15 + 0.03 >= body[0] - half && body[0] < 3.56) {
-                body[0] += 0.02;
-                world.boxes.set(0, new FakeWorld.Box(body[0] - half, body[1] - half, body[0] + half, body[1] + half));
+            int last = world.boxes.size() - 1;
+            if (world.boxes.get(last).near(robot.x, robot.y, 0.15 + 0.03) && robot.x < body[0]) {
+                body[0] += 0.005;   // 0.1 m/s, slower than a pushing robot drives
+                world.boxes.set(last, new FakeWorld.Box(body[0] - 0.125, 1.75, body[0] + 0.125, 2.5));
             }
         }
-        assertTrue(body[0] > 2.56 + 0.5, "the robot pushed the body east: it lies at x " + body[0]);
+        assertTrue(body[0] > 4.125 + 0.5, "the robot pushed the body out of the doorway: it lies at x " + body[0]);
         assertEquals(1, explorer.bodies().size(), "one body: " + explorer.bodies());
         double known = explorer.bodies().get(0).x();
-        assertTrue(Math.abs(known - body[0]) < 0.3, "the body is known at x " + known + ", it lies at x " + body[0]);
+        assertTrue(Math.abs(known - body[0]) < 0.35, "the body is known at x " + known + ", it lies at x " + body[0]);
+    }
+
+    /** With room to go round a body, the robot goes round it: it pushes only where no other way is open. */
+    @Test
+    void aBodyWithRoomAroundIt_isGoneRound_notPushed() {
+        double[] body = {2.56, 2.125};
+        FakeWorld world = new FakeWorld(8, 4).box(body[0] - HALF, body[1] - HALF, body[0] + HALF, body[1] + HALF);
+        FakeRobot robot = world.robot("r1", 1.125, 2.125, 0);
+        Explorer explorer = new Explorer(robot, knownWest(world));
+        explorer.pushAside(body[0], body[1]);
+        explorer.start();
+        explorer.explore();
+        double[] touched = new double[1];
+        pushableBody(world, robot, body, 10, touched);
+        assertTrue(robot.x > 3.0, "the robot went on east: x " + robot.x);
+        assertEquals(0, touched[0], "steps the robot touched the body");
+        assertEquals(2.56, body[0], 1e-9, "the body was not pushed");
     }
 
     @Test
