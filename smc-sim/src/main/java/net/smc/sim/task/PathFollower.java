@@ -2,6 +2,7 @@ package net.smc.sim.task;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import net.smc.sim.hardware.Drive;
 import net.smc.sim.hardware.Pose;
 import net.smc.sim.hardware.ProximitySensors;
@@ -26,7 +27,7 @@ final class PathFollower {
     private final double stopDistance;
     private final List<Point> path = new ArrayList<>();
     private double arriveTolerance;
-    private final List<Point> pushable = new java.util.ArrayList<>();
+    private final List<Point> pushable = new ArrayList<>();
     /** The body the last step pushed and where it was taken to lie then, or null ({@link #takePush}). */
     private Push pushed;
 
@@ -60,10 +61,10 @@ final class PathFollower {
     }
 
     /** The push of the last step, if it pushed, and forgets it: where the body it pushed now lies. */
-    java.util.Optional<Push> takePush() {
+    Optional<Push> takePush() {
         Push p = pushed;
         pushed = null;
-        return java.util.Optional.ofNullable(p);
+        return Optional.ofNullable(p);
     }
 
     /** How near a pushable body the robot must be for what is in front of it to be taken for that body, m. */
@@ -73,7 +74,7 @@ final class PathFollower {
 
     /** Half the width of a robot's body, m: from the front sensors to a pushed body's centre, and from the robot's centre to its front. */
     static final double HALF_BODY = 0.16;
-    /** The farthest a pushed body is taken to have moved from where it was known in one step, m. */
+    /** The farthest a pushed body is taken to have slid from where it was last known, m. */
     static final double MAX_SLIDE = FailedBodies.BODY_REACH;
     /** How far the robot must have moved on while pushing for what is in front to be taken to have given way, m. */
     static final double GAVE_WAY = 0.05;
@@ -159,11 +160,11 @@ final class PathFollower {
                 return Status.OBSTRUCTED;
             }
             forward = Math.min(forward, max * PUSH_SPEED);
-            // What is in front is taken for the body: it lies there now, wherever it lay before.
+            // Where what is in front lies. It is taken for the body only if it gives way (the robot
+            // has moved on since it began to push: into a jamb or a wall it stands still) and lies
+            // near where the body was known (a body slides, it does not jump).
             double ahead = HALF_BODY + front + HALF_BODY;
             Point now = new Point(pose.x() + Math.cos(pose.heading()) * ahead, pose.y() + Math.sin(pose.heading()) * ahead);
-            // Only what gives way is the body: the robot pushing has moved on since it began to push
-            // (into a jamb or a wall it stands still), and the body slides, it does not jump.
             if (pushStart == null) {
                 pushStart = new Point(pose.x(), pose.y());
             } else if (pushStart.distanceTo(pose.x(), pose.y()) >= GAVE_WAY
