@@ -45,12 +45,8 @@ final class Supervisor {
     private Cancellable rediscoveryDue;
     /** Whether the cell stopped: what fails as its communication stops asks for no rediscovery. */
     private boolean stopped;
-    /** The next early repeat of discovery while a seat stays open (see {@link #repeatDiscovery}), or null. */
-    private Cancellable repeatDue;
-    /** When {@link #repeatDue} fires, and whether it is the first repeat after the discovery that left at {@link #repeatFromMillis}. */
-    private long repeatAtMillis;
-    private boolean firstRepeat;
-    private long repeatFromMillis;
+    /** The early repeats of discovery while a seat stays open. */
+    private final DiscoveryRepeats repeats;
 
     private final TeamContext ctx;
     private final TeamState st;
@@ -68,6 +64,8 @@ final class Supervisor {
         this.backup = backup;
         this.recruiter = recruiter;
         this.merge = merge;
+        this.repeats = new DiscoveryRepeats(ctx, () -> !stopped && !st.seats.isEmpty() && st.hasVacancy() && !st.recruitingHeld,
+                this::rediscover);
     }
 
     void onHeartbeat(Envelope env, Heartbeat h) {
@@ -191,63 +189,15 @@ final class Supervisor {
         if (open && !st.discovering) {
             ctx.emit(CellEvent.Kind.DISCOVERING, "discovers for "
                     + st.owned.keySet().stream().filter(st::open).map(Seat::toString).toList());
-            startRepeats(discoveryLeftMillis);
+            repeats.start(discoveryLeftMillis);
         }
         st.discovering = open;
         return open;
     }
 
-    /**
-     * Discovery and its replies travel unacknowledged: when either is lost, a seat would stay open
-     * until the next tick's discovery, a whole heartbeat period later, on every level of the tree
-     * below it. So, from each start of discovery, while a seat stays open it is discovered again
-     * when the answers to the discovery that started it should have come: the cell's retransmission
-     * timeout ({@code MessageSender.cellTimeoutMillis}: its measured round trips, which the replies
-     * to its discoveries feed, plus four deviations, no shorter than the timing's minimum; the fixed
-     * first timeout while nothing was measured) after that discovery left; then after twice that,
-     * and so on while the wait is below a heartbeat period; from then on the tick discovers every
-     * period. The first repeat is brought forward when replies measured meanwhile shorten the
-     * estimate (a commander's first discovery is timed before any round trip is known). Each repeat
-     * goes through {@link #rediscover}: none while capability requests are out, and within its rate limit.
-     */
-    private void startRepeats(long discoveryLeftMillis) {
-        if (repeatDue != null || stopped) {
-            return;
-        }
-        long wait = ctx.comm().sender().cellTimeoutMillis();
-        repeatFromMillis = discoveryLeftMillis;
-        firstRepeat = true;
-        armRepeat(discoveryLeftMillis + wait, wait);
-    }
-
     /** A discovery reply gave a round trip: a first repeat due later than the estimate now says is brought forward. */
     void roundTripMeasured() {
-        if (repeatDue == null || !firstRepeat) {
-            return;
-        }
-        long wait = ctx.comm().sender().cellTimeoutMillis();
-        long at = repeatFromMillis + wait;
-        if (at < repeatAtMillis) {
-            repeatDue.cancel();
-            repeatDue = null;
-            armRepeat(at, wait);
-        }
-    }
-
-    private void armRepeat(long atMillis, long waitMillis) {
-        if (stopped || waitMillis >= ctx.timing().comTimeoutMillis()) {
-            return;
-        }
-        long now = ctx.clock().nowMillis();
-        repeatAtMillis = Math.max(now, atMillis);
-        repeatDue = ctx.scheduler().schedule(repeatAtMillis - now, () -> {
-            repeatDue = null;
-            firstRepeat = false;
-            if (!stopped && !st.seats.isEmpty() && st.hasVacancy() && !st.recruitingHeld) {
-                rediscover();
-                armRepeat(ctx.clock().nowMillis() + 2 * waitMillis, 2 * waitMillis);
-            }
-        });
+        repeats.roundTripMeasured();
     }
 
     /**
@@ -317,10 +267,7 @@ final class Supervisor {
             rediscoveryDue.cancel();
             rediscoveryDue = null;
         }
-        if (repeatDue != null) {
-            repeatDue.cancel();
-            repeatDue = null;
-        }
+        repeats.stop();
     }
 
     /** A child was silent for the failure timeout: vacate its seats and raise UAVFailure for each. */

@@ -3,6 +3,7 @@ package net.smc.core.security;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
+import java.util.function.Consumer;
 
 import net.smc.core.transport.Address;
 
@@ -43,6 +44,19 @@ final class HeldDatagrams {
         held.put(from, datagram);
         count++;
         receiver.onUnverified(from, payload);
+    }
+
+    /**
+     * The datagram held from {@code from}, no longer held, handed to {@code check} (the transport's
+     * every check, then its delivery); whether one was held.
+     */
+    boolean check(Address from, Consumer<byte[]> check) {
+        byte[] data = take(from);
+        if (data == null) {
+            return false;
+        }
+        check.accept(data);
+        return true;
     }
 
     /** The datagram held from {@code from}, no longer held; null when none is. */

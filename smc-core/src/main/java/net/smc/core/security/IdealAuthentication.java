@@ -326,13 +326,10 @@ public final class IdealAuthentication {
 
         @Override
         public boolean checkHeld(Address from) {
-            byte[] data = held.take(from);
-            if (data == null) {
-                return false;
-            }
-            heldChecked.accept(localAddress(), from);
-            check(from, data);
-            return true;
+            return held.check(from, data -> {
+                heldChecked.accept(localAddress(), from);
+                check(from, data);
+            });
         }
 
         /** Whether {@code data} (sealed) carries a payload the receiver reads before it is checked. */

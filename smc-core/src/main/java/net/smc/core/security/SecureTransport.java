@@ -197,12 +197,7 @@ public final class SecureTransport implements AuthenticatingTransport {
 
     @Override
     public boolean checkHeld(Address from) {
-        byte[] data = held.take(from);
-        if (data == null) {
-            return false;
-        }
-        check(from, data);
-        return true;
+        return held.check(from, data -> check(from, data));
     }
 
     /** Signed datagrams held unchecked for the receiver to read first ({@link #holdUnverified}). */
