@@ -56,7 +56,7 @@ class SetupTimeCommandTest {
         assertEquals(0, r.status(), r.err());
         String out = r.out();
         assertTrue(out.contains("5 roles distributed run 1:"), out);
-        assertTrue(out.contains("by level: L1 ") && out.contains(" L3 "), out);
+        assertTrue(out.contains("by level (first/half/90%/last): L1 ") && out.contains(" L3 ") && out.contains("slowest "), out);
         assertTrue(out.matches("(?s).*busiest cell (cdr|b\\d+l\\d+n\\d+): [0-9.]+ ms charged CPU:.*policy_load.*"), out);
         assertTrue(out.contains("team sent (datagrams/bytes):") && out.contains("ROLE_ASSIGNMENT"), out);
     }

@@ -1,6 +1,9 @@
 package net.smc.sim.experiment;
 
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
@@ -74,7 +77,7 @@ public final class SetupTimeRun {
         for (Address a : network.attached()) {
             busiest = Math.max(busiest, network.cpuMicros(a));
         }
-        report.accept(progress.levels() + progress.assignments() + charge.ledger().report() + retransmissions(sim));
+        report.accept(progress.levels() + progress.tail() + progress.assignments() + charge.ledger().report() + retransmissions(sim));
         double setup = progress.complete() && progress.start >= 0 ? progress.end - progress.start : -1;
         return new SetupResult(generated.seats(), scheme, "sim", run, setup, charge.datagrams(), charge.bytes(),
                 busiest / 1_000.0, progress.seats.size());
@@ -103,10 +106,17 @@ public final class SetupTimeRun {
         final Set<String> seats = new HashSet<>();
         final int needed;
         final Map<String, RoleType> roles;
-        /** Per level: when its first and its last seat was first accepted. */
-        final TreeMap<Integer, long[]> levels = new TreeMap<>();
+        /** Per level: when each of its seats was first accepted, in order. */
+        final TreeMap<Integer, List<Long>> levels = new TreeMap<>();
         long start = -1;
         long end = -1;
+        /** Per seat: when its manager first and last sent an assignment for it, and how many it sent. */
+        final Map<String, long[]> tries = new HashMap<>();
+        /** Per seat: who manages it; per vehicle: when it first started a role. */
+        final Map<String, String> managerOf = new HashMap<>();
+        final Map<String, Long> vehicleStarted = new HashMap<>();
+        /** Per seat, when it was first accepted. */
+        final Map<String, Long> seatStarted = new HashMap<>();
         /** Role assignments sent, and those that failed by why (vehicle names left out). */
         int assignments;
         final TreeMap<String, Integer> failures = new TreeMap<>();
@@ -122,6 +132,11 @@ public final class SetupTimeRun {
                 start = e.timeMillis();
             } else if (e.kind() == CellEvent.Kind.ASSIGNING) {
                 assignments++;
+                String seat = e.detail().substring(0, Math.max(0, e.detail().indexOf(' ')));
+                long[] t = tries.computeIfAbsent(seat, k -> new long[] {e.timeMillis(), e.timeMillis(), 0});
+                t[1] = e.timeMillis();
+                t[2]++;
+                managerOf.put(seat, e.vehicle());
             } else if (e.kind() == CellEvent.Kind.ASSIGNMENT_FAILED) {
                 int colon = e.detail().indexOf(": ");
                 String why = colon < 0 ? e.detail() : e.detail().substring(colon + 2);
@@ -131,6 +146,8 @@ public final class SetupTimeRun {
                 String seat = space < 0 ? e.detail() : e.detail().substring(0, space);
                 if (seats.add(seat)) {
                     level(seat, e.timeMillis());
+                    seatStarted.put(seat, e.timeMillis());
+                    vehicleStarted.putIfAbsent(e.vehicle(), e.timeMillis());
                     if (seats.size() == needed) {
                         end = e.timeMillis();
                     }
@@ -142,8 +159,7 @@ public final class SetupTimeRun {
             int hash = seat.indexOf('#');
             RoleType role = roles.get(hash < 0 ? seat : seat.substring(0, hash));
             if (role != null) {
-                long[] span = levels.computeIfAbsent(role.level(), l -> new long[] {at, at});
-                span[1] = at;
+                levels.computeIfAbsent(role.level(), l -> new ArrayList<>()).add(at);
             }
         }
 
@@ -164,12 +180,70 @@ public final class SetupTimeRun {
             return seats.size() >= needed;
         }
 
-        /** One line: per level of the tree, when its first and last role started, ms after the commander's start. */
+        /**
+         * One line: per level of the tree, when its first role started, when half and nine in ten of its
+         * roles had (nearest rank), and when its last did, ms after the commander's start.
+         */
         String levels() {
-            StringBuilder s = new StringBuilder("roles started, ms after the commander's start, by level:");
-            levels.forEach((level, span) -> s.append(String.format(Locale.ROOT, " L%d %d-%d", level, span[0] - start,
-                    span[1] - start)));
+            StringBuilder s = new StringBuilder("roles started, ms after the commander's start, by level (first/half/90%/last):");
+            levels.forEach((level, times) -> s.append(String.format(Locale.ROOT, " L%d %d/%d/%d/%d", level,
+                    times.get(0) - start, rank(times, 0.5) - start, rank(times, 0.9) - start,
+                    times.get(times.size() - 1) - start)));
             return s.append('\n').toString();
+        }
+
+        /**
+         * One line on the slowest tenth of the deepest level's roles, where their time went, on average:
+         * until their manager started, from then until its first assignment for the seat (discovery,
+         * choosing, the manager's own queue), over further assignments when the first failed, and from
+         * the last assignment until the role started (delivery, policies, loading).
+         */
+        String tail() {
+            if (levels.isEmpty() || start < 0) {
+                return "";
+            }
+            int deepest = levels.lastKey();
+            List<Map.Entry<String, Long>> leaves = seatStarted.entrySet().stream()
+                    .filter(en -> level(en.getKey()) == deepest)
+                    .sorted(Map.Entry.comparingByValue()).toList();
+            List<Map.Entry<String, Long>> slow = leaves.subList(leaves.size() - Math.max(1, leaves.size() / 10), leaves.size());
+            double manager = 0;
+            double first = 0;
+            double retry = 0;
+            double deliver = 0;
+            double count = 0;
+            int n = 0;
+            for (Map.Entry<String, Long> en : slow) {
+                long[] t = tries.get(en.getKey());
+                Long parent = vehicleStarted.get(managerOf.get(en.getKey()));
+                if (t == null) {
+                    continue;
+                }
+                long up = parent == null ? start : parent;
+                manager += up - start;
+                first += t[0] - up;
+                retry += t[1] - t[0];
+                deliver += en.getValue() - t[1];
+                count += t[2];
+                n++;
+            }
+            if (n == 0) {
+                return "";
+            }
+            return String.format(Locale.ROOT, "slowest %d of L%d, on average: manager started %.0f ms, first assignment "
+                    + "%.0f ms later, last %.0f ms after the first (%.2f assignments a seat), role started %.0f ms after "
+                    + "the last%n", n, deepest, manager / n, first / n, retry / n, count / n, deliver / n);
+        }
+
+        private int level(String seat) {
+            int hash = seat.indexOf('#');
+            RoleType role = roles.get(hash < 0 ? seat : seat.substring(0, hash));
+            return role == null ? -1 : role.level();
+        }
+
+        /** The nearest-rank quantile {@code q} of times already in order. */
+        private static long rank(List<Long> times, double q) {
+            return times.get(Math.max(0, (int) Math.ceil(q * times.size()) - 1));
         }
     }
 }

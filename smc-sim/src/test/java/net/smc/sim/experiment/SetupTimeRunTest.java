@@ -75,8 +75,36 @@ class SetupTimeRunTest {
         assertTrue(text.contains("policy_load") && text.contains("handshake"), text);
         assertTrue(text.matches("(?s).*busiest cell (cdr|b\\d+l\\d+n\\d+): .*"), text);
         assertTrue(text.contains("POLICY_REPLY") && text.contains("DISCOVERY_REPLY") && text.contains("ROLE_ASSIGNMENT"), text);
-        assertTrue(text.matches("(?s).*by level: L1 \\d+-\\d+ L2 \\d+-\\d+ L3 \\d+-\\d+.*"), text);
         assertTrue(text.matches("(?s).*role assignments \\d+ for 9 seats.*"), text);
+        // Per level: first <= half <= 90% <= last; the last role of all started when the set-up ended.
+        java.util.regex.Matcher level = java.util.regex.Pattern.compile(" L(\\d) (\\d+)/(\\d+)/(\\d+)/(\\d+)").matcher(
+                text.substring(text.indexOf("by level (first/half/90%/last):")));
+        long last = 0;
+        long ninety = 0;
+        int levels = 0;
+        while (level.find() && levels < 3) {
+            levels++;
+            long[] t = new long[4];
+            for (int i = 0; i < 4; i++) {
+                t[i] = Long.parseLong(level.group(i + 2));
+            }
+            assertTrue(t[0] <= t[1] && t[1] <= t[2] && t[2] <= t[3], text);
+            last = Math.max(last, t[3]);
+            ninety = t[2];
+        }
+        assertEquals(3, levels, text);
+        assertEquals(r.setupMillis(), last, 0.0, text);
+        // The slowest tenth of L3 (one role of six): its time from the commander's start, in four parts that add up.
+        java.util.regex.Matcher tail = java.util.regex.Pattern.compile("slowest (\\d+) of L3, on average: manager started "
+                + "(\\d+) ms, first assignment (\\d+) ms later, last (\\d+) ms after the first \\((\\d+\\.\\d+) assignments "
+                + "a seat\\), role started (\\d+) ms after the last").matcher(text);
+        assertTrue(tail.find(), text);
+        assertEquals(1, Integer.parseInt(tail.group(1)), text);
+        long parts = Long.parseLong(tail.group(2)) + Long.parseLong(tail.group(3)) + Long.parseLong(tail.group(4))
+                + Long.parseLong(tail.group(6));
+        assertEquals(last, parts, 2, text); // one seat: its start, each part rounded
+        assertTrue(Double.parseDouble(tail.group(5)) >= 1.0, text);
+        assertTrue(ninety <= last, text);
     }
 
     /**
