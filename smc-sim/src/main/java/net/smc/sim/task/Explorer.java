@@ -1,7 +1,6 @@
 package net.smc.sim.task;
 
 import java.util.ArrayDeque;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -27,9 +26,9 @@ import net.smc.sim.map.Zone;
  * the jambs; when no frontier is open with that clearance it plans with less: the body's
  * half-width and 5 cm. Something in the way makes it back off and plan again to the same frontier, up to
  * {@link #OBSTRUCTIONS} times. A frontier it gave up on (no way there, stalled, obstructed) is set
- * aside with the frontier cells within {@link #SET_ASIDE_RADIUS} of it, for
+ * aside with the frontier cells within {@link SetAsideFrontiers#RADIUS} of it, for
  * {@link #SET_ASIDE_SECONDS} the first time and twice as long at each further failure there, up to
- * {@link #SET_ASIDE_MAX_SECONDS}: the rest of the house is explored first, and the way there may be
+ * {@link SetAsideFrontiers#MAX_SECONDS}: the rest of the house is explored first, and the way there may be
  * open by then (a robot stood in a doorway, say). A frontier whose unknown side stays unknown while
  * the robot stands within {@link #LOOKED_FROM} of it for {@link #LOOK_SECONDS} (or on it) lies
  * behind something the ring cannot see past: a cell straddling a wall, whose unknown neighbour is
@@ -65,9 +64,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     /** How often something in the way may stop the robot on its way to one frontier before it gives that frontier up. */
     static final int OBSTRUCTIONS = 3;
     /** How long a frontier given up on is set aside the first time, s. */
-    static final double SET_ASIDE_SECONDS = 20;
-    /** The longest a frontier is set aside, s. */
-    static final double SET_ASIDE_MAX_SECONDS = 160;
+    static final double SET_ASIDE_SECONDS = SetAsideFrontiers.FIRST_SECONDS;
     /**
      * How close to a frontier cell the robot must come for its ring (2 m in the house) to have seen
      * past it, m: an unknown cell beside it that is still unknown then lies behind something (the
@@ -78,8 +75,6 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     static final double LOOK_SECONDS = 1.5;
     /** A frontier given up on (obstructed, stalled) this close has its unknown side taken to be hidden, m. */
     static final double GAVE_UP_NEAR = 1.0;
-    /** Frontier cells within this of one given up on are set aside with it, m: they share its unknown region. */
-    static final double SET_ASIDE_RADIUS = 0.5;
 
     private final OccupancyGrid map;
     private final PathPlanner planner;
@@ -87,7 +82,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     private PathPlanner current;
     private final PathFollower follower;
     private final Set<Integer> reportedObstacles = new HashSet<>();
-    private final SetAside setAside = new SetAside();
+    private final SetAsideFrontiers setAside;
     private final Set<Integer> hidden = new HashSet<>();
     private final boolean[] struck;
     private final Set<String> sighted = new HashSet<>();
@@ -113,6 +108,7 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
         super(hardware);
         this.map = java.util.Objects.requireNonNull(map, "map");
         this.struck = new boolean[map.cols() * map.rows()];
+        this.setAside = new SetAsideFrontiers(map);
         this.planner = new PathPlanner(CLEARANCE);
         this.narrow = new PathPlanner(narrowClearance());
         this.current = planner;
@@ -490,30 +486,5 @@ public final class Explorer extends RobotTask implements ExplorerI, Handover {
     /** Whether the frontier cell is set aside now (for tests). */
     boolean isSetAside(int col, int row) {
         return setAside.holds(col, row, now);
-    }
-
-    /**
-     * Frontiers given up on, each with the time until which it and the frontier cells around it
-     * are not chosen, and how often it was given up on.
-     */
-    private final class SetAside {
-        private final Map<Integer, Double> until = new LinkedHashMap<>();
-        private final Map<Integer, Integer> failures = new HashMap<>();
-
-        void add(int cell, double time) {
-            int n = failures.merge(cell, 1, Integer::sum);
-            until.put(cell, time + Math.min(SET_ASIDE_MAX_SECONDS, SET_ASIDE_SECONDS * Math.pow(2, n - 1)));
-        }
-
-        boolean holds(int col, int row, double time) {
-            until.values().removeIf(t -> t <= time);
-            double reach = SET_ASIDE_RADIUS / map.resolution();
-            for (int cell : until.keySet()) {
-                if (Math.hypot(cell % map.cols() - col, cell / map.cols() - row) <= reach + 1e-9) {
-                    return true;
-                }
-            }
-            return false;
-        }
     }
 }
