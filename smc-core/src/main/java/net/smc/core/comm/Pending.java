@@ -27,6 +27,8 @@ final class Pending {
     long deadlineMillis;
     /** Acked or failed: any timer entry still naming it is stale. */
     boolean settled;
+    /** Taken for lost by the {@link LossDetector} (a message sent after it was acknowledged first). */
+    boolean suspected;
 
     Pending(long id, Address to, MessageType type, List<byte[]> datagrams, DeliveryListener listener,
             long firstSentMillis, long firstTimeoutMillis) {

@@ -10,6 +10,7 @@ public final class SenderCounters {
     long sent;
     long acked;
     long retransmitted;
+    long fastRetransmitted;
     long failed;
     long unknownAcks;
     long misdirectedAcks;
@@ -34,6 +35,14 @@ public final class SenderCounters {
     /** Retransmissions: transmissions after the first, over all messages. */
     public long retransmitted() {
         return retransmitted;
+    }
+
+    /**
+     * Of the retransmissions, those sent before their timeout because a message sent after them to the
+     * same peer was acknowledged first ({@code LossDetector}).
+     */
+    public long fastRetransmitted() {
+        return fastRetransmitted;
     }
 
     /** Critical messages given up on (reported to their listener as failed). */
@@ -73,7 +82,7 @@ public final class SenderCounters {
 
     @Override
     public String toString() {
-        return "sent=" + sent + " acked=" + acked + " retransmitted=" + retransmitted + " failed=" + failed
+        return "sent=" + sent + " acked=" + acked + " retransmitted=" + retransmitted + " (fast " + fastRetransmitted + ") failed=" + failed
                 + " unknownAcks=" + unknownAcks + " misdirectedAcks=" + misdirectedAcks + " delivered=" + delivered
                 + " duplicates=" + duplicates + " acksSent=" + acksSent + " ackDatagrams=" + ackDatagrams;
     }

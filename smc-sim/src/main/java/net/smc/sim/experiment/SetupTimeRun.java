@@ -90,14 +90,17 @@ public final class SetupTimeRun {
     static String retransmissions(TeamSimulation sim) {
         long sent = 0;
         long retransmitted = 0;
+        long fast = 0;
         long duplicates = 0;
         for (net.smc.core.cell.Cell c : sim.cells()) {
             net.smc.core.comm.SenderCounters k = c.communication().sender().counters();
             sent += k.sent();
             retransmitted += k.retransmitted();
+            fast += k.fastRetransmitted();
             duplicates += k.duplicates();
         }
-        return "team's critical messages: " + sent + " sent, " + retransmitted + " retransmitted, " + duplicates
+        return "team's critical messages: " + sent + " sent, " + retransmitted + " retransmitted (" + fast
+                + " before their timeout), " + duplicates
                 + " copies received again\n";
     }
 
