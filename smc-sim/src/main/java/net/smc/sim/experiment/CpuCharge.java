@@ -3,8 +3,10 @@ package net.smc.sim.experiment;
 import java.nio.charset.StandardCharsets;
 import java.util.BitSet;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.function.BiPredicate;
 import java.util.function.ToIntFunction;
 
@@ -161,7 +163,9 @@ public final class CpuCharge implements CpuModel {
         ledger.received(node.number, type);
         if (type == MessageType.POLICY_REPLY.code()) {
             PolicyText text = policyText(data);
-            if (text != null) {
+            // A second copy (a retransmission whose first copy arrived) is dropped by the duplicate
+            // window once decoded: its text is neither inflated nor loaded again.
+            if (text != null && node.firstCopy(from, messageId(data))) {
                 if (text.deflated()) {
                     ns += charge(node, Category.INFLATE, costs.inflateNanosPerByte() * text.bytes());
                 }
@@ -275,6 +279,23 @@ public final class CpuCharge implements CpuModel {
         return (b[at] & 0xFF) << 8 | (b[at + 1] & 0xFF);
     }
 
+    /** The message id in a datagram's header (a fragment's: the whole message's), or -1 if unreadable. */
+    long messageId(byte[] data) {
+        int at = payloadOffset + SENDER_LENGTH_OFFSET + 1;
+        if (data.length <= at) {
+            return -1;
+        }
+        at += data[at - 1] & 0xFF;
+        if (data.length < at + 8) {
+            return -1;
+        }
+        long id = 0;
+        for (int i = 0; i < 8; i++) {
+            id = id << 8 | (data[at + i] & 0xFF);
+        }
+        return id;
+    }
+
     /** The vehicle named as a datagram's sender, or "" if unreadable. */
     String sender(byte[] data) {
         int at = payloadOffset;
@@ -303,9 +324,16 @@ public final class CpuCharge implements CpuModel {
         String vehicle;
         /** Work done since this node's last datagram, to be charged with its next. */
         double owedNanos;
+        /** The policy replies this node was charged for, by sender and message id. */
+        final Set<String> policyCopies = new HashSet<>();
 
         Node(int number) {
             this.number = number;
+        }
+
+        /** Whether the message {@code id} from {@code from} is new here (its first copy). */
+        boolean firstCopy(Address from, long id) {
+            return policyCopies.add(from + "#" + id);
         }
 
         /** Whether this node has sent to or received from {@code other} (other than held datagrams). */

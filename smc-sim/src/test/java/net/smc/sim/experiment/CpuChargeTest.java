@@ -35,9 +35,12 @@ class CpuChargeTest {
         return sealedPolicyReply(sender, uri, "x".repeat(textLength));
     }
 
+    /** Message ids, one per reply built (the receiver tells a second copy of a message by its sender and id). */
+    private static final java.util.concurrent.atomic.AtomicLong IDS = new java.util.concurrent.atomic.AtomicLong(7);
+
     private static List<byte[]> sealedPolicyReply(String sender, String uri, String text) {
         List<byte[]> sealed = new ArrayList<>();
-        for (byte[] message : new MessageEncoder().datagrams(new Envelope(sender, 7, new PolicyReply(1, uri, 1,
+        for (byte[] message : new MessageEncoder().datagrams(new Envelope(sender, IDS.getAndIncrement(), new PolicyReply(1, uri, 1,
                 text)))) {
             sealed.add(ByteBuffer.allocate(message.length + 16).putLong(42).put(message).putLong(99).array());
         }
@@ -72,6 +75,31 @@ class CpuChargeTest {
         assertEquals(COSTS.loadNanosPerByte() * 3_000 / 1e6, charged.get(Category.POLICY_LOAD), 1e-9, "per byte of text");
         assertEquals(COSTS.inflateNanosPerByte() * (300 + 3_000) / 1e6, charged.get(Category.INFLATE), 1e-9,
                 "both replies were inflated, the kept copy too");
+    }
+
+    /**
+     * A second copy of a reply (retransmitted after its Ack was lost, or too soon) is decoded and
+     * checked, then dropped by the duplicate window: it costs no inflating and no loading.
+     */
+    @Test
+    void aSecondCopyOfAReplyIsNeitherInflatedNorLoadedAgain() {
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, CpuChargeTest::loads, IdealAuthentication.PAYLOAD_OFFSET);
+        introduce(charge, vehicle, "b0l1n0");
+        introduce(charge, manager, "cdr");
+        String text = "p := root/factory/ecapolicy create. p event: /event/newUAV; active: true.\n".repeat(10);
+        byte[] reply = sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", text).get(0);
+        long first = charge.receiveMicros(vehicle, manager, reply, false);
+        Map<Category, Double> once = Map.copyOf(charge.ledger().millisByCategory(0));
+        long second = charge.receiveMicros(vehicle, manager, reply, false);
+        Map<Category, Double> twice = charge.ledger().millisByCategory(0);
+        assertEquals(COSTS.loadNanosPerByte() * text.length() / 1e6, twice.get(Category.POLICY_LOAD), 1e-9);
+        assertEquals(once.get(Category.INFLATE), twice.get(Category.INFLATE), 1e-12);
+        assertTrue(twice.get(Category.CODEC) > once.get(Category.CODEC), "the copy is still decoded");
+        assertTrue(second < first, second + " us against " + first);
+        // Another message with the same text is loaded again.
+        charge.receiveMicros(vehicle, manager, sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", text).get(0), false);
+        assertEquals(2 * COSTS.loadNanosPerByte() * text.length() / 1e6, charge.ledger().millisByCategory(0)
+                .get(Category.POLICY_LOAD), 1e-9);
     }
 
     /** Text that deflate shrinks little (random letters): a reply of 3,000 bytes still needs fragments. */
