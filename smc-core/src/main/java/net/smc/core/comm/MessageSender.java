@@ -346,15 +346,8 @@ public final class MessageSender {
             if (stopped || p.settled || p.tries != 1) {
                 return;
             }
-            counters.retransmitted++;
             counters.fastRetransmitted++;
-            try {
-                transmit(p);
-            } catch (RuntimeException e) {
-                log.warn("'{}': retransmission of {} refused by the transport", self, p, e);
-                pending.remove(p.id);
-                fail(p, FailureReason.SEND_ERROR);
-            }
+            retransmit(p);
         });
     }
 
@@ -367,6 +360,11 @@ public final class MessageSender {
             fail(p, FailureReason.NO_ACK);
             return;
         }
+        retransmit(p);
+    }
+
+    /** Sends {@code p} again; a transport that refuses fails it ({@link FailureReason#SEND_ERROR}). */
+    private void retransmit(Pending p) {
         counters.retransmitted++;
         try {
             transmit(p);

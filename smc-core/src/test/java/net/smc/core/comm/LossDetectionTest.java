@@ -33,6 +33,15 @@ class LossDetectionTest {
         net.awaitUntil(() -> a.settled.get() == before + 1, 5_000);
     }
 
+    /** a sends b two messages; the first one's first copy is lost. Its id, then the second's. */
+    private static long[] firstLostThenSecond(SimNet net, Peer a, Peer b) {
+        net.network.partition(Set.of(a.address()), Set.of(b.address()));
+        long lost = a.send(b, new CapabilityRequest("first"));
+        net.network.heal();
+        long next = a.send(b, new CapabilityRequest("second"));
+        return new long[] {lost, next};
+    }
+
     @Test
     void aMessageLostAheadOfAnother_goesAgainOnceTheOthersAckIsInAndTheWindowHasPassed() {
         SimNet net = net(ADAPTIVE);
@@ -42,10 +51,9 @@ class LossDetectionTest {
         MessageSender s = a.manager.sender();
         assertEquals(30, s.firstTimeoutMillis(b.address()));
         long sent = net.scheduler.nowMillis();
-        net.network.partition(Set.of(a.address()), Set.of(b.address()));
-        long lost = a.send(b, new CapabilityRequest("first"));
-        net.network.heal();
-        long next = a.send(b, new CapabilityRequest("second"));
+        long[] ids = firstLostThenSecond(net, a, b);
+        long lost = ids[0];
+        long next = ids[1];
         net.awaitUntil(() -> a.outcomes.get(lost).result != null && a.outcomes.get(next).result != null, 5_000);
         assertEquals(10, a.outcomes.get(next).settledMillis - sent);
         // The second's Ack at 10 ms; 3 ms later the first goes again, and its Ack comes 10 ms after.
@@ -98,10 +106,7 @@ class LossDetectionTest {
         Peer b = net.peer("uav-b");
         assertNull(a.manager.sender().losses());
         long sent = net.scheduler.nowMillis();
-        net.network.partition(Set.of(a.address()), Set.of(b.address()));
-        long lost = a.send(b, new CapabilityRequest("first"));
-        net.network.heal();
-        a.send(b, new CapabilityRequest("second"));
+        long lost = firstLostThenSecond(net, a, b)[0];
         net.awaitUntil(() -> a.settled.get() == 2, 5_000);
         assertEquals(30 + 10, a.outcomes.get(lost).settledMillis - sent);
         assertEquals(0, a.manager.sender().counters().fastRetransmitted());
@@ -115,10 +120,7 @@ class LossDetectionTest {
         measure(net, a, b);
         long sent = net.scheduler.nowMillis();
         // b cannot hear a until 40 ms: the first message's first copy and its fast retransmission are lost.
-        net.network.partition(Set.of(a.address()), Set.of(b.address()));
-        long lost = a.send(b, new CapabilityRequest("first"));
-        net.network.heal();
-        a.send(b, new CapabilityRequest("second"));
+        long lost = firstLostThenSecond(net, a, b)[0];
         net.scheduler.schedule(11, () -> net.network.partition(Set.of(a.address()), Set.of(b.address())));
         net.scheduler.schedule(40, net.network::heal);
         net.awaitUntil(() -> a.settled.get() == 3, 5_000);
