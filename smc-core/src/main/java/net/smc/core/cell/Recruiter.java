@@ -23,7 +23,6 @@ import net.smc.core.message.CapabilityRequest;
 import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Invocation;
-import net.smc.core.message.Leave;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
 import net.smc.policy.api.Nil;
@@ -44,7 +43,8 @@ import net.smc.core.transport.Address;
  * request and its reply would add a round trip to every level of the management tree and decide
  * nothing more. A request asked for outside such a decision still goes out.
  *
- * <p>Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE and POLICY_REQUEST.
+ * <p>Owns DISCOVERY_REPLY, CAPABILITY_REPLY, ASSIGNMENT_RESPONSE (settled by {@link AssignmentAnswers}) and
+ * POLICY_REQUEST.
  */
 final class Recruiter {
     private final TeamContext ctx;
@@ -67,6 +67,8 @@ final class Recruiter {
     private final CapabilityAsks asks;
     /** The discovery replies decided on together: a burst, those that came while the role was loading. */
     private final ReplyBatches batches;
+    /** The answers to this cell's role assignments. */
+    private final AssignmentAnswers answers;
 
     /** Told when a discovery reply gave the sender a round trip (Supervisor re-times its discovery repeat). */
     private final Runnable measured;
@@ -83,6 +85,7 @@ final class Recruiter {
         this.policies = new PolicyServer(ctx, st);
         this.asks = new CapabilityAsks(ctx, st);
         this.batches = new ReplyBatches(ctx, st, this::decide, measured, discoverAfresh);
+        this.answers = new AssignmentAnswers(ctx, st, counts, backup, this::lookAgain);
         this.ctx = ctx;
         this.st = st;
         this.seating = seating;
@@ -387,94 +390,12 @@ final class Recruiter {
     }
 
     void onAssignmentResponse(Envelope env, AssignmentResponse r) {
-        String vehicle = env.sender();
-        Optional<Seat> seat = st.owned.entrySet().stream()
-                .filter(e -> vehicle.equals(e.getValue().pendingFor) && e.getKey().role().equals(r.role()))
-                .map(Map.Entry::getKey).findFirst();
-        if (seat.isEmpty() && !r.accepted() && st.capabilityRequests.remove(vehicle) != null) {
-            // The vehicle declined a capability request: it took a seat from another manager since it
-            // answered discovery. The request no longer holds rediscovery back; look again now.
-            st.forgetAnswer(vehicle);
-            lookAgain();
-            return;
-        }
-        if (seat.isEmpty()) {
-            Child child = st.children.get(vehicle);
-            boolean known = child != null && child.seats.stream().anyMatch(s -> s.role().equals(r.role()));
-            if (r.accepted() && !known) {
-                revoke(vehicle, r.role());
-            }
-            return; // known: its heartbeat already told us it took the seat
-        }
-        if (!r.accepted()) {
-            assignmentFailed(vehicle, seat.get(), "refused: " + r.reason());
-            return;
-        }
-        accepted(vehicle, seat.get());
-        Child c = st.children.get(vehicle);
-        if (c != null) {
-            c.confirmedBy.put(seat.get(), env.id());
-        }
+        answers.onAssignmentResponse(env, r);
     }
 
-    /**
-     * A vehicle took a seat this cell no longer reserves for it (the reservation expired): it must
-     * give the role back, or it would hold a seat that may have gone to another.
-     */
-    private void revoke(String vehicle, String role) {
-        Child child = st.children.get(vehicle);
-        Optional<Address> to = ctx.address(vehicle);
-        if (to.isEmpty()) {
-            return;
-        }
-        ctx.emit(CellEvent.Kind.REJECTED, vehicle + " took " + role + " after its reservation expired; revoked");
-        if (child != null && !child.seats.isEmpty()) {
-            ctx.comm().send(to.get(), new Invocation(role, "release", List.of()));
-        } else {
-            ctx.send(to.get(), new Leave("'" + ctx.self() + "' no longer holds a seat of '" + role + "' for '" + vehicle + "'"));
-        }
-    }
-
-    /** The vehicle took the seat: it is now a child holding it. */
+    /** The vehicle took the seat: it is now a child holding it ({@link AssignmentAnswers#accepted}). */
     void accepted(String vehicle, Seat seatTaken) {
-        Optional<Seat> seat = Optional.of(seatTaken);
-        Owned o = st.owned.get(seat.get());
-        o.pendingFor = null;
-        o.holder = vehicle;
-        Child child = st.children.computeIfAbsent(vehicle, Child::new);
-        child.address = ctx.address(vehicle).orElse(child.address);
-        child.lastHeard = ctx.clock().nowMillis();
-        List<Seat> before = child.seats;
-        child.seats = ctx.slots().afterAssign(before, seat.get()).stream().filter(st.owned::containsKey).toList();
-        st.linksChanged();
-        for (Seat dropped : before) {
-            if (!child.seats.contains(dropped) && st.owned.containsKey(dropped) && vehicle.equals(st.owned.get(dropped).holder)) {
-                st.owned.get(dropped).holder = null;
-            }
-        }
-        st.handover.remove(seat.get().role());
-        st.forgetAnswer(vehicle);
-        ctx.emit(CellEvent.Kind.ASSIGNED, seat.get() + " to " + vehicle + " (now holds " + child.seats + ")");
-        backup.sendRosterIfBackup();
-        counts.updateMissionState();
-    }
-
-    void assignmentFailed(String vehicle, Seat seat, String why) {
-        Owned o = st.owned.get(seat);
-        if (o == null || !vehicle.equals(o.pendingFor)) {
-            return;
-        }
-        o.pendingFor = null;
-        Child child = st.children.get(vehicle);
-        if (child != null && child.seats.isEmpty()) {
-            st.children.remove(vehicle);
-            st.linksChanged();
-        }
-        st.forgetAnswer(vehicle); // it refused, or fell silent: what it answered no longer holds
-        ctx.emit(CellEvent.Kind.ASSIGNMENT_FAILED, seat + " to " + vehicle + ": " + why);
-        // The seat is open again: look for another vehicle now (one taken by a neighbouring manager,
-        // say), not at the next tick.
-        lookAgain();
+        answers.accepted(vehicle, seatTaken);
     }
 
     void onPolicyRequest(Envelope env, PolicyRequest r) {
@@ -497,7 +418,7 @@ final class Recruiter {
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();
             if (o.pendingFor != null && now - o.pendingSince > ctx.pendingMillis()) {
-                assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + ctx.pendingMillis() + " ms");
+                answers.assignmentFailed(o.pendingFor, e.getKey(), "no answer within " + ctx.pendingMillis() + " ms");
             }
         }
     }
