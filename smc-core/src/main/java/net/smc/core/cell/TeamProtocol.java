@@ -9,7 +9,6 @@ import net.smc.core.discovery.DiscoveryActions;
 import net.smc.core.message.AssignmentResponse;
 import net.smc.core.message.CapabilityReply;
 import net.smc.core.message.CapabilityRequest;
-import net.smc.core.message.DecodeResult;
 import net.smc.core.message.Discovery;
 import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Echo;
@@ -19,7 +18,6 @@ import net.smc.core.message.Identity;
 import net.smc.core.message.Invocation;
 import net.smc.core.message.Leave;
 import net.smc.core.message.Message;
-import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageType;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
@@ -161,8 +159,8 @@ final class TeamProtocol implements DiscoveryActions {
     private final Supervisor supervisor;
     private final Collaboration collaboration;
     private final CellRequests cellRequests;
-    /** Decodes datagrams not yet authenticated for {@link #ignoresUnverified}: its own, so the cell's reassembly is untouched. */
-    private final MessageDecoder peek;
+    /** What this cell reads of datagrams its authenticating transport has not checked yet. */
+    private final UnverifiedReads unverified;
     private Cancellable tickTimer;
     private boolean stopped;
 
@@ -185,7 +183,7 @@ final class TeamProtocol implements DiscoveryActions {
         this.supervisor = new Supervisor(ctx, st, seating, counts, backup, recruiter, merge);
         this.collaboration = new Collaboration(ctx, st, assignee);
         this.cellRequests = new CellRequests(ctx, st, collaboration::nextCall);
-        this.peek = new MessageDecoder(ctx.clock()::nowMillis);
+        this.unverified = new UnverifiedReads(ctx, assignee, recruiter, () -> stopped);
     }
 
     /**
@@ -220,53 +218,24 @@ final class TeamProtocol implements DiscoveryActions {
         route(router, MessageType.CELL_REQUEST, CellRequest.class, cellRequests::onCellRequest);
     }
 
-    /** Where a message's type code sits in its datagram (after the magic and the version: {@code Header}). */
-    private static final int TYPE_AT = 3;
-
     /** Shares the decodes of {@link #ignoresUnverified} with the process's other cells (null: none). */
     void shareDecodes(SharedDecodes table) {
-        peek.share(table);
+        unverified.share(table);
     }
 
-    /**
-     * Whether this cell would do nothing, now, with the message in {@code data[offset, offset + length)}
-     * (one datagram as the Communication-Manager decodes it, read in place) whoever really sent it: a discovery it would not answer
-     * ({@link Assignee#ignores}: the vehicle has a parent, or could hold no role that manager
-     * manages). In a large team every cell hears every manager's discovery and answers few of them;
-     * checking the signature of each (an Ed25519 verification, and the sender's credential the first
-     * time) is most of what a busy manager's CPU does while the team forms. An authenticating
-     * transport asks this before its checks and drops what it is told ({@code
-     * AuthenticatingTransport.setUnverifiedFilter}): dropping an authentic message this cell would
-     * ignore changes nothing, and a forged one would have been refused. It must never answer true for
-     * a message the cell acts on, or a forger could choose what the cell hears: so only discoveries,
-     * only by the same test {@link Assignee#onDiscovery} applies, and never a fragment or anything
-     * that does not decode.
-     */
+    /** Whether this cell would do nothing with the unchecked message, whoever sent it ({@link UnverifiedReads#ignores}). */
     boolean ignoresUnverified(byte[] data, int offset, int length) {
-        if (length <= TYPE_AT || (data[offset + TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
-            return false;
-        }
-        return peek.decode(data, offset, length) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
-                && assignee.ignores(d.envelope().sender(), discovery);
+        return unverified.ignores(data, offset, length);
     }
 
-    /**
-     * Whether the authenticating transport should hold the payload {@code data[offset, offset + length)}
-     * (read in place) unchecked for this cell to read first ({@code AuthenticatingTransport.holdUnverified}): a discovery reply (not a fragment
-     * of one). A manager reads the answers to its discovery to choose whom to contact, and checks (a
-     * credential verification, then a key agreement as it contacts the vehicle) only those it tries
-     * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
-     */
+    /** Whether the transport should hold the payload unchecked for this cell to read first ({@link UnverifiedReads#reads}). */
     boolean readsUnverified(byte[] data, int offset, int length) {
-        return length > TYPE_AT && (data[offset + TYPE_AT] & 0xFF) == MessageType.DISCOVERY_REPLY.code();
+        return unverified.reads(data, offset, length);
     }
 
-    /** A payload held unchecked ({@link #readsUnverified}) from {@code from}: who claims to answer, for the recruiter's choice. */
+    /** A payload held unchecked from {@code from} ({@link UnverifiedReads#onHeld}). */
     void onUnverified(Address from, byte[] datagram) {
-        if (!stopped && peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof DiscoveryReply r
-                && !d.envelope().sender().equals(ctx.self())) {
-            recruiter.onUnverifiedReply(d.envelope().sender(), from, r);
-        }
+        unverified.onHeld(from, datagram);
     }
 
     /** The router selects by type, so the body is of {@code body}'s class: the cast names, it does not choose. */

@@ -1,0 +1,83 @@
+package net.smc.core.cell;
+
+import java.util.function.BooleanSupplier;
+
+import net.smc.core.message.DecodeResult;
+import net.smc.core.message.Discovery;
+import net.smc.core.message.DiscoveryReply;
+import net.smc.core.message.MessageDecoder;
+import net.smc.core.message.MessageType;
+import net.smc.core.message.SharedDecodes;
+import net.smc.core.transport.Address;
+
+/**
+ * What a cell reads of a datagram before its authenticating transport has checked it (part of
+ * {@link TeamProtocol}): the discoveries it would ignore whoever sent them, dropped before their
+ * check, and the discovery replies a manager reads to choose whom to contact, held unchecked.
+ */
+final class UnverifiedReads {
+    /** Where a message's type code sits in its datagram (after the magic and the version: {@code Header}). */
+    private static final int TYPE_AT = 3;
+
+    private final TeamContext ctx;
+    private final Assignee assignee;
+    private final Recruiter recruiter;
+    /** Whether the cell stopped: it then reads nothing more. */
+    private final BooleanSupplier stopped;
+    /** Decodes datagrams not yet authenticated: its own, so the cell's reassembly is untouched. */
+    private final MessageDecoder peek;
+
+    UnverifiedReads(TeamContext ctx, Assignee assignee, Recruiter recruiter, BooleanSupplier stopped) {
+        this.ctx = ctx;
+        this.assignee = assignee;
+        this.recruiter = recruiter;
+        this.stopped = stopped;
+        this.peek = new MessageDecoder(ctx.clock()::nowMillis);
+    }
+
+    /** Shares the decodes of {@link #ignores} with the process's other cells (null: none). */
+    void share(SharedDecodes table) {
+        peek.share(table);
+    }
+
+    /**
+     * Whether this cell would do nothing, now, with the message in {@code data[offset, offset + length)}
+     * (one datagram as the Communication-Manager decodes it, read in place) whoever really sent it: a discovery it would not answer
+     * ({@link Assignee#ignores}: the vehicle has a parent, or could hold no role that manager
+     * manages). In a large team every cell hears every manager's discovery and answers few of them;
+     * checking the signature of each (an Ed25519 verification, and the sender's credential the first
+     * time) is most of what a busy manager's CPU does while the team forms. An authenticating
+     * transport asks this before its checks and drops what it is told ({@code
+     * AuthenticatingTransport.setUnverifiedFilter}): dropping an authentic message this cell would
+     * ignore changes nothing, and a forged one would have been refused. It must never answer true for
+     * a message the cell acts on, or a forger could choose what the cell hears: so only discoveries,
+     * only by the same test {@link Assignee#onDiscovery} applies, and never a fragment or anything
+     * that does not decode.
+     */
+    boolean ignores(byte[] data, int offset, int length) {
+        if (length <= TYPE_AT || (data[offset + TYPE_AT] & 0xFF) != MessageType.DISCOVERY.code()) {
+            return false;
+        }
+        return peek.decode(data, offset, length) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Discovery discovery
+                && assignee.ignores(d.envelope().sender(), discovery);
+    }
+
+    /**
+     * Whether the authenticating transport should hold the payload {@code data[offset, offset + length)}
+     * (read in place) unchecked for this cell to read first ({@code AuthenticatingTransport.holdUnverified}): a discovery reply (not a fragment
+     * of one). A manager reads the answers to its discovery to choose whom to contact, and checks (a
+     * credential verification, then a key agreement as it contacts the vehicle) only those it tries
+     * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
+     */
+    boolean reads(byte[] data, int offset, int length) {
+        return length > TYPE_AT && (data[offset + TYPE_AT] & 0xFF) == MessageType.DISCOVERY_REPLY.code();
+    }
+
+    /** A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, for the recruiter's choice. */
+    void onHeld(Address from, byte[] datagram) {
+        if (!stopped.getAsBoolean() && peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof DiscoveryReply r
+                && !d.envelope().sender().equals(ctx.self())) {
+            recruiter.onUnverifiedReply(d.envelope().sender(), from, r);
+        }
+    }
+}
