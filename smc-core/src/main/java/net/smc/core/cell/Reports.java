@@ -3,6 +3,7 @@ package net.smc.core.cell;
 import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -77,7 +78,7 @@ final class Reports {
         // A report that repeats the last one (most do: an unchanged subtree is reported again every
         // sixteenth heartbeat) moves nothing, so this cell's own report is not built again for it.
         if (size != child.size || hosted != child.hosted || child.subtree == null
-                || !List.copyOf(counts.entrySet()).equals(List.copyOf(child.subtree.entrySet())) || !state.equals(child.state)) {
+                || !sameInOrder(counts, child.subtree) || !state.equals(child.state)) {
             child.size = size;
             child.hosted = hosted;
             child.subtree = counts;
@@ -279,5 +280,19 @@ final class Reports {
         return new CellView(ctx.self(), ctx.missionId(), st.identity == null ? null : st.identity.toString(), st.epoch, st.commander, st.acting,
                 st.parent == null ? null : st.parent.vehicle(), suspended(), st.seats.stream().map(Seat::toString).toList(), kids,
                 st.acting ? st.missionState : null, st.acting ? counts.subtreeCounts() : Map.of(), ctx.clock().nowMillis());
+    }
+
+    /** Whether two maps hold the same entries in the same order (a report's counts keep its order), without copying them. */
+    private static boolean sameInOrder(Map<String, Integer> a, Map<String, Integer> b) {
+        if (a.size() != b.size()) {
+            return false;
+        }
+        Iterator<Map.Entry<String, Integer>> other = b.entrySet().iterator();
+        for (Map.Entry<String, Integer> e : a.entrySet()) {
+            if (!e.equals(other.next())) {
+                return false;
+            }
+        }
+        return true;
     }
 }

@@ -45,23 +45,35 @@ final class SiblingOrder {
         int siblings = slots.owner(openSeat).map(manager -> slots.optimal(manager.role())).orElse(1);
         long start = slots.owner(openSeat).map(manager -> startOf(manager.slot(), siblings)).orElse(Long.MIN_VALUE);
         long share = Long.divideUnsigned(-1L, Math.max(1, siblings));
-        List<String> ordered = new ArrayList<>(vehicles);
-        ordered.sort((a, b) -> {
-            long fromStartA = key(a) - start;
-            long fromStartB = key(b) - start;
-            boolean ownA = siblings <= 1 || Long.compareUnsigned(fromStartA, share) < 0;
-            boolean ownB = siblings <= 1 || Long.compareUnsigned(fromStartB, share) < 0;
-            int c;
-            if (ownA && ownB) {
-                c = Long.compareUnsigned(fromStartA, fromStartB);
-            } else if (ownA != ownB) {
-                c = ownA ? -1 : 1;
-            } else {
-                c = Long.compare(mix(key(a) ^ start), mix(key(b) ^ start));
-            }
-            return c != 0 ? c : a.compareTo(b);
-        });
+        // Each vehicle's place is worked out once (a hash of its id), not at every comparison.
+        List<Ranked> ranked = new ArrayList<>(vehicles.size());
+        for (String v : vehicles) {
+            long key = key(v);
+            boolean own = siblings <= 1 || Long.compareUnsigned(key - start, share) < 0;
+            ranked.add(new Ranked(v, own, own ? key - start : mix(key ^ start)));
+        }
+        ranked.sort(null);
+        List<String> ordered = new ArrayList<>(ranked.size());
+        ranked.forEach(r -> ordered.add(r.vehicle()));
         return ordered;
+    }
+
+    /**
+     * A vehicle, whether it lies in the manager's own share, and its rank: in the own share its
+     * distance round the ring from the share's start (unsigned), outside it its ring place mixed with
+     * that start (signed).
+     */
+    private record Ranked(String vehicle, boolean own, long rank) implements Comparable<Ranked> {
+        @Override
+        public int compareTo(Ranked o) {
+            int c;
+            if (own != o.own) {
+                c = own ? -1 : 1;
+            } else {
+                c = own ? Long.compareUnsigned(rank, o.rank) : Long.compare(rank, o.rank);
+            }
+            return c != 0 ? c : vehicle.compareTo(o.vehicle);
+        }
     }
 
     /**

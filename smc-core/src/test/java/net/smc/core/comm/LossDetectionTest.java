@@ -26,6 +26,18 @@ class LossDetectionTest {
         return net;
     }
 
+    private SimNet net;
+    private Peer a;
+    private Peer b;
+
+    /** The network with adaptive timeouts, peers a and b on it, and one round trip from a to b measured. */
+    private void measuredPair() {
+        net = net(ADAPTIVE);
+        a = net.peer("uav-a");
+        b = net.peer("uav-b");
+        measure(net, a, b);
+    }
+
     /** Sends one message from a to b and waits for its Ack: a round trip measured (estimate 30 ms). */
     private static void measure(SimNet net, Peer a, Peer b) {
         int before = a.settled.get();
@@ -44,10 +56,7 @@ class LossDetectionTest {
 
     @Test
     void aMessageLostAheadOfAnother_goesAgainOnceTheOthersAckIsInAndTheWindowHasPassed() {
-        SimNet net = net(ADAPTIVE);
-        Peer a = net.peer("uav-a");
-        Peer b = net.peer("uav-b");
-        measure(net, a, b);
+        measuredPair();
         MessageSender s = a.manager.sender();
         assertEquals(30, s.firstTimeoutMillis(b.address()));
         long sent = net.scheduler.nowMillis();
@@ -69,10 +78,7 @@ class LossDetectionTest {
 
     @Test
     void messagesAcknowledgedInTheOrderSent_areNeverSentAgain() {
-        SimNet net = net(ADAPTIVE);
-        Peer a = net.peer("uav-a");
-        Peer b = net.peer("uav-b");
-        measure(net, a, b);
+        measuredPair();
         for (int i = 0; i < 20; i++) {
             a.send(b, new CapabilityRequest("r" + i));
         }
@@ -83,10 +89,7 @@ class LossDetectionTest {
 
     @Test
     void aCopyOvertakenWithinTheWindow_isNotSentAgain() {
-        SimNet net = net(ADAPTIVE);
-        Peer a = net.peer("uav-a");
-        Peer b = net.peer("uav-b");
-        measure(net, a, b);
+        measuredPair();
         // The first copy takes 2 ms longer than the second: its Ack comes 2 ms after the second's, within the 3 ms window.
         net.network.setLink(a.address(), b.address(), LinkProfile.fixed(7));
         long slow = a.send(b, new CapabilityRequest("slow"));
@@ -101,9 +104,9 @@ class LossDetectionTest {
     @Test
     void withAFixedTimeout_aLostMessageWaitsForItsTimeout() {
         SenderSettings fixed = new SenderSettings(30, 2.0, 1_000, 4, 0.0, 60_000, 1_000);
-        SimNet net = net(fixed);
-        Peer a = net.peer("uav-a");
-        Peer b = net.peer("uav-b");
+        net = net(fixed);
+        a = net.peer("uav-a");
+        b = net.peer("uav-b");
         assertNull(a.manager.sender().losses());
         long sent = net.scheduler.nowMillis();
         long lost = firstLostThenSecond(net, a, b)[0];
@@ -114,10 +117,7 @@ class LossDetectionTest {
 
     @Test
     void aSuspectIsSentAgainOnce_andThenBacksOffAsAnyRetransmission() {
-        SimNet net = net(ADAPTIVE);
-        Peer a = net.peer("uav-a");
-        Peer b = net.peer("uav-b");
-        measure(net, a, b);
+        measuredPair();
         long sent = net.scheduler.nowMillis();
         // b cannot hear a until 40 ms: the first message's first copy and its fast retransmission are lost.
         long lost = firstLostThenSecond(net, a, b)[0];

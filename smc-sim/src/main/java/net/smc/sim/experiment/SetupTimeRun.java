@@ -159,10 +159,9 @@ public final class SetupTimeRun {
         }
 
         private void level(String seat, long at) {
-            int hash = seat.indexOf('#');
-            RoleType role = roles.get(hash < 0 ? seat : seat.substring(0, hash));
-            if (role != null) {
-                levels.computeIfAbsent(role.level(), l -> new ArrayList<>()).add(at);
+            int level = level(seat);
+            if (level >= 0) {
+                levels.computeIfAbsent(level, l -> new ArrayList<>()).add(at);
             }
         }
 
@@ -235,9 +234,10 @@ public final class SetupTimeRun {
             }
             return String.format(Locale.ROOT, "slowest %d of L%d, on average: manager started %.0f ms, first assignment "
                     + "%.0f ms later, last %.0f ms after the first (%.2f assignments a seat), role started %.0f ms after "
-                    + "the last%n", n, deepest, manager / n, first / n, retry / n, count / n, deliver / n);
+                    + "the last\n", n, deepest, manager / n, first / n, retry / n, count / n, deliver / n);
         }
 
+        /** The tree level of {@code seat}'s role, or -1 for a seat of no generated role. */
         private int level(String seat) {
             int hash = seat.indexOf('#');
             RoleType role = roles.get(hash < 0 ? seat : seat.substring(0, hash));
