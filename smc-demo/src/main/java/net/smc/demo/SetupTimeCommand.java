@@ -112,6 +112,25 @@ final class SetupTimeCommand implements Callable<Integer> {
                     + "runs over UDP, timed on the wall clock, always run one at a time."})
     Integer jobs;
 
+    @Option(names = "--hops", paramLabel = "N", description = "Radio hops between any two vehicles (default: "
+            + "the model's, 2).")
+    Integer hops;
+
+    @Option(names = "--hop-latency", paramLabel = "MS", description = "Base delay of one hop, ms (default: the model's, 2).")
+    Long hopLatencyMillis;
+
+    @Option(names = "--hop-jitter", paramLabel = "MS", description = "Largest extra delay of one hop, ms (default: the "
+            + "model's, 2).")
+    Long hopJitterMillis;
+
+    @Option(names = "--bandwidth", paramLabel = "MBIT", description = "Each sender's radio rate, Mbit/s (default: the "
+            + "model's, 2.75).")
+    Double bandwidthMbit;
+
+    @Option(names = "--loss", paramLabel = "P", description = "Chance that a datagram copy is lost, from 0 to below 1 "
+            + "(default: the model's, 0.01).")
+    Double loss;
+
     @Option(names = "--verbose", description = {"After each simulated run, a report on standard output: when the roles "
             + "of each level of the tree started, the busiest cell's charged CPU by category and the datagrams it "
             + "received by kind, and the team's datagrams and bytes by kind."})
@@ -125,6 +144,7 @@ final class SetupTimeCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         List<Scheme> schemeList = schemes();
         checkArguments();
+        RadioNetwork radio = radio();
         boolean sim = transports.contains("sim");
         boolean udp = transports.contains("udp");
         Path dir = io.workingDir().resolve(out);
@@ -158,7 +178,6 @@ final class SetupTimeCommand implements Callable<Integer> {
             costs = Calibration.measure(boot, MissionGenerator.write(TreeShape.of(20, 4), work.resolve("calibration"), boot));
         }
         CpuCosts charged = costs;
-        RadioNetwork radio = RadioNetwork.ADHOC_80211;
         if (sim) {
             costs.save(dir.resolve("costs.properties"));
             io.stdout().println("network: " + radio);
@@ -264,6 +283,35 @@ final class SetupTimeCommand implements Callable<Integer> {
                     report.indent(2));
             io.stdout().flush();
         }
+    }
+
+    /**
+     * The radio network of the simulated runs: {@link RadioNetwork#ADHOC_80211} with what the options
+     * give in its place; a value the model refuses is a usage error naming the option.
+     */
+    private RadioNetwork radio() {
+        RadioNetwork model = RadioNetwork.ADHOC_80211;
+        if (hops != null && hops < 1) {
+            throw new ParameterException(spec.commandLine(), "--hops " + hops + ": it must be 1 or more");
+        }
+        if (hopLatencyMillis != null && hopLatencyMillis < 0) {
+            throw new ParameterException(spec.commandLine(), "--hop-latency " + hopLatencyMillis + ": it must be 0 ms or more");
+        }
+        if (hopJitterMillis != null && hopJitterMillis < 0) {
+            throw new ParameterException(spec.commandLine(), "--hop-jitter " + hopJitterMillis + ": it must be 0 ms or more");
+        }
+        if (bandwidthMbit != null && !(bandwidthMbit >= 1e-5 && bandwidthMbit <= 1e6)) {
+            throw new ParameterException(spec.commandLine(), "--bandwidth " + bandwidthMbit
+                    + ": it must be from 0.00001 to 1000000 Mbit/s");
+        }
+        if (loss != null && !(loss >= 0 && loss < 1)) {
+            throw new ParameterException(spec.commandLine(), "--loss " + loss + ": it must be from 0 to below 1 (0.01 is 1%)");
+        }
+        return new RadioNetwork(hops == null ? model.hops() : hops,
+                hopLatencyMillis == null ? model.hopLatencyMillis() : hopLatencyMillis,
+                hopJitterMillis == null ? model.hopJitterMillis() : hopJitterMillis,
+                bandwidthMbit == null ? model.bytesPerSecond() : Math.round(bandwidthMbit * 1e6 / 8),
+                loss == null ? model.loss() : loss);
     }
 
     private List<Scheme> schemes() {

@@ -117,6 +117,50 @@ class SetupTimeCommandTest {
         return all;
     }
 
+    /**
+     * The radio options replace the model's figures: with hops of 50 ms, each of the three levels below
+     * the commander waits at least one assignment's trip (two hops) and so at least 300 ms in all.
+     */
+    @Test
+    void radioOptions_replaceTheModelsFigures_andSlowLinksSlowTheSetUp() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "2", "--seed", "3",
+                "--schemes", "distributed", "--out", "out", "--costs", costs().toString(), "--policies",
+                policies().toString(), "--hops", "2", "--hop-latency", "50", "--hop-jitter", "0", "--bandwidth", "27.5",
+                "--loss", "0");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("network: 2 hops x (50 ms + up to 0 ms), 27.50 Mbit/s per sender, 0.0% loss"), r.out());
+        List<String> csv = Files.readAllLines(dir.resolve("out/setup-time.csv"));
+        for (String row : csv.subList(1, csv.size())) {
+            assertTrue(Double.parseDouble(row.split(",", -1)[4]) >= 300, "three levels of 100 ms trips: " + row);
+        }
+        Smc.Result model = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "distributed", "--out", "model", "--costs", costs().toString(), "--policies",
+                policies().toString());
+        assertTrue(model.out().contains("network: 2 hops x (2 ms + up to 2 ms), 2.75 Mbit/s per sender, 1.0% loss"),
+                model.out());
+        List<String> fast = Files.readAllLines(dir.resolve("model/setup-time.csv"));
+        assertTrue(Double.parseDouble(fast.get(1).split(",", -1)[4]) < 300, "the model's radio: " + fast.get(1));
+    }
+
+    @Test
+    void radioValuesOutOfRange_areUsageErrorsNamingTheOption() {
+        String[][] cases = {
+            {"--loss", "1", "--loss 1.0: it must be from 0 to below 1"},
+            {"--loss", "-0.5", "--loss -0.5: it must be from 0 to below 1"},
+            {"--hops", "0", "--hops 0: it must be 1 or more"},
+            {"--hop-latency", "-1", "--hop-latency -1: it must be 0 ms or more"},
+            {"--hop-jitter", "-3", "--hop-jitter -3: it must be 0 ms or more"},
+            {"--bandwidth", "0", "--bandwidth 0.0: it must be from 0.00001 to 1000000 Mbit/s"},
+            {"--bandwidth", "NaN", "--bandwidth NaN: it must be from 0.00001 to 1000000 Mbit/s"},
+        };
+        for (String[] c : cases) {
+            Smc.Result r = Smc.in(dir).run("experiment", "setup-time", c[0], c[1], "--out", "o");
+            assertEquals(2, r.status(), c[0] + " " + c[1]);
+            assertTrue(r.err().contains(c[2]), r.err());
+        }
+        assertTrue(!Files.exists(dir.resolve("o")), "refused before anything was written");
+    }
+
     @Test
     void zeroJobs_isAUsageError() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--jobs", "0", "--out", "o");
