@@ -131,6 +131,11 @@ final class SetupTimeCommand implements Callable<Integer> {
             + "(default: the model's, 0.01).")
     Double loss;
 
+    @Option(names = "--spare", paramLabel = "PCT", defaultValue = "0", description = {"Vehicles beyond the seats, in "
+            + "percent of each role's seats, rounded up, built for that role like the others (default: ${DEFAULT-VALUE}: "
+            + "one vehicle per seat). Simulated runs only."})
+    int sparePercent;
+
     @Option(names = "--verbose", description = {"After each simulated run, a report on standard output: when the roles "
             + "of each level of the tree started, the busiest cell's charged CPU by category and the datagrams it "
             + "received by kind, and the team's datagrams and bytes by kind."})
@@ -181,6 +186,8 @@ final class SetupTimeCommand implements Callable<Integer> {
         if (sim) {
             costs.save(dir.resolve("costs.properties"));
             io.stdout().println("network: " + radio);
+            io.stdout().println("team: one vehicle per seat" + (sparePercent == 0 ? ""
+                    : " and " + sparePercent + "% more of each role, rounded up"));
             io.stdout().println("CPU costs: " + costs);
         }
         io.stdout().flush();
@@ -249,7 +256,7 @@ final class SetupTimeCommand implements Callable<Integer> {
     private SimulatedRun simulate(GeneratedMission g, Mission mission, Scheme scheme, int run, RadioNetwork radio,
                                   CpuCosts costs) {
         String[] report = {""};
-        SetupResult r = SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis,
+        SetupResult r = SetupTimeRun.run(g, mission, scheme, run, seed + run, radio, costs, limitMillis, sparePercent,
                 text -> report[0] = text);
         return new SimulatedRun(r, report[0]);
     }
@@ -346,6 +353,14 @@ final class SetupTimeCommand implements Callable<Integer> {
             }
         }
         transports = transports.stream().distinct().toList();
+        if (sparePercent < 0 || sparePercent > GeneratedMission.MAX_SPARE_PERCENT) {
+            throw new ParameterException(spec.commandLine(), "--spare " + sparePercent + ": it must be from 0 to "
+                    + GeneratedMission.MAX_SPARE_PERCENT + " (percent of each role's seats)");
+        }
+        if (sparePercent > 0 && transports.contains("udp")) {
+            throw new ParameterException(spec.commandLine(), "--spare " + sparePercent + " with --transport udp: spare "
+                    + "vehicles are for simulated runs; a run over UDP has one vehicle per seat");
+        }
         if (transports.contains("udp")) {
             for (int n : roles) {
                 if (n > UdpSetupTimeRun.MAX_ROLES) {

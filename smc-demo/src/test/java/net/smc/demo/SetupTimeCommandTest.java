@@ -161,6 +161,33 @@ class SetupTimeCommandTest {
         assertTrue(!Files.exists(dir.resolve("o")), "refused before anything was written");
     }
 
+    /** Spare vehicles: the team is larger, the seats are the same, every one of them started. */
+    @Test
+    void spareVehicles_fillTheSameSeats_andTheTeamLineSaysSo() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "20", "--runs", "2", "--seed", "3",
+                "--out", "out", "--costs", costs().toString(), "--policies", policies().toString(), "--spare", "50");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("team: one vehicle per seat and 50% more of each role, rounded up"), r.out());
+        List<String> csv = Files.readAllLines(dir.resolve("out/setup-time.csv"));
+        assertEquals(1 + 2 * 2, csv.size(), String.join("\n", csv));
+        for (String row : csv.subList(1, csv.size())) {
+            String[] f = row.split(",", -1);
+            assertTrue(!f[4].isEmpty(), "every role started: " + row);
+            assertEquals(19, Integer.parseInt(f[8]), row);
+        }
+    }
+
+    @Test
+    void spareOutOfRange_orOverUdp_isAUsageError() {
+        Smc.Result negative = Smc.in(dir).run("experiment", "setup-time", "--spare", "-1", "--out", "o");
+        assertEquals(2, negative.status());
+        assertTrue(negative.err().contains("--spare -1: it must be from 0 to 1000"), negative.err());
+        Smc.Result udp = Smc.in(dir).run("experiment", "setup-time", "--spare", "10", "--transport", "udp", "--roles", "5",
+                "--out", "o");
+        assertEquals(2, udp.status());
+        assertTrue(udp.err().contains("--spare 10 with --transport udp"), udp.err());
+    }
+
     @Test
     void zeroJobs_isAUsageError() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--jobs", "0", "--out", "o");

@@ -12,7 +12,7 @@ import net.smc.sim.team.SimVehicle;
 
 /**
  * A mission written by {@link MissionGenerator}: its files, its roles and a team of vehicles that
- * fills every seat, one vehicle per seat, each able to hold exactly its own role.
+ * fills every seat, one vehicle per seat (and spares, if asked for), each able to hold exactly its own role.
  *
  * @param directory  where it was written: {@code missions/} and {@code policies/} (the repository)
  * @param shape      the shape of its management tree
@@ -21,6 +21,8 @@ import net.smc.sim.team.SimVehicle;
 public record GeneratedMission(Path directory, TreeShape shape, List<RoleType> roles) {
     /** The commander's vehicle id. */
     public static final String COMMANDER = "cdr";
+    /** The most spare vehicles {@link #vehicles(int)} builds, in percent of a role's seats. */
+    public static final int MAX_SPARE_PERCENT = 1_000;
 
     public GeneratedMission {
         roles = List.copyOf(roles);
@@ -47,10 +49,26 @@ public record GeneratedMission(Path directory, TreeShape shape, List<RoleType> r
 
     /** The team: the commander first, then one vehicle per seat, role by role. */
     public List<SimVehicle> vehicles() {
+        return vehicles(0);
+    }
+
+    /**
+     * The team with spare vehicles: the commander first, then for each role one vehicle per seat and
+     * {@code sparePercent} percent more (rounded up), built for that role like the others, so that the
+     * role's last seats need not wait for its last free vehicle.
+     *
+     * @throws IllegalArgumentException when {@code sparePercent} is below 0 or above 1,000
+     */
+    public List<SimVehicle> vehicles(int sparePercent) {
+        if (sparePercent < 0 || sparePercent > MAX_SPARE_PERCENT) {
+            throw new IllegalArgumentException("spare vehicles " + sparePercent + "% must be from 0 to "
+                    + MAX_SPARE_PERCENT + "%");
+        }
         List<SimVehicle> team = new ArrayList<>(seats());
         team.add(new SimVehicle(COMMANDER, Set.of(MissionGenerator.RADIO), Set.of(), true, false));
         for (RoleType r : roles) {
-            for (int s = 0; s < r.seats(); s++) {
+            int built = r.seats() + (r.seats() * sparePercent + 99) / 100;
+            for (int s = 0; s < built; s++) {
                 team.add(new SimVehicle(r.vehicle(s), Set.of(MissionGenerator.RADIO, r.resource()), Set.of(), false, false));
             }
         }

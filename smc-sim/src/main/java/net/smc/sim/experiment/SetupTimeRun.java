@@ -54,13 +54,23 @@ public final class SetupTimeRun {
      */
     public static SetupResult run(GeneratedMission generated, Mission mission, Scheme scheme, int run, long seed,
                                   RadioNetwork radio, CpuCosts costs, long limitMillis, Consumer<String> report) {
+        return run(generated, mission, scheme, run, seed, radio, costs, limitMillis, 0, report);
+    }
+
+    /**
+     * As {@link #run(GeneratedMission, Mission, Scheme, int, long, RadioNetwork, CpuCosts, long, Consumer)},
+     * with a team of {@code sparePercent} percent more vehicles than seats ({@link GeneratedMission#vehicles(int)}).
+     */
+    public static SetupResult run(GeneratedMission generated, Mission mission, Scheme scheme, int run, long seed,
+                                  RadioNetwork radio, CpuCosts costs, long limitMillis, int sparePercent,
+                                  Consumer<String> report) {
         Objects.requireNonNull(scheme, "scheme");
         if (limitMillis <= 0) {
             throw new IllegalArgumentException("time limit " + limitMillis + " ms must be above 0");
         }
         Progress progress = new Progress(generated.seats() - 1, generated.byName());
         TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(generated.repository()), seed)
-                .vehicles(generated.vehicles()).scheme(scheme).link(radio.link()).listener(progress).build();
+                .vehicles(generated.vehicles(sparePercent)).scheme(scheme).link(radio.link()).listener(progress).build();
         // The team simulation seals every datagram (IdealAuthentication): the message follows the seal's counter.
         // A cell drops a discovery it would not answer before checking it: that costs no verification.
         // A manager holds discovery replies unchecked and checks those of the vehicles it tries to seat.

@@ -17,6 +17,7 @@ import net.smc.core.cell.Slots;
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.MissionLoader;
 import net.smc.policy.api.PolicyRepository;
+import net.smc.sim.team.SimVehicle;
 
 class MissionGeneratorTest {
     @TempDir
@@ -48,6 +49,24 @@ class MissionGeneratorTest {
         Slots slots = new Slots(mission, Scheme.DISTRIBUTED);
         int most = slots.all().stream().mapToInt(s -> slots.ownedBy(s).size()).max().orElseThrow();
         assertTrue(most <= 10, "a manager owns " + most + " seats");
+    }
+
+    /** Spares: a tenth more of each role, rounded up (a role of one seat gets one), each built for its role alone. */
+    @Test
+    void spareVehicles_aPercentMoreOfEachRole_roundedUp_eachFittingItsOwnRole() throws Exception {
+        GeneratedMission g = MissionGenerator.write(TreeShape.of(1000, 4), dir, Project.bootEvents());
+        Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
+        List<SimVehicle> team = g.vehicles(10);
+        assertEquals(team.size(), team.stream().map(SimVehicle::id).distinct().count(), "ids are distinct");
+        for (RoleType r : g.roles()) {
+            long fit = team.stream().filter(v -> mission.role(r.name()).orElseThrow().requirement().isMetBy(v.description()))
+                    .count();
+            assertEquals(r.seats() + (long) Math.ceil(r.seats() / 10.0), fit, r.name() + " of " + r.seats() + " seats");
+        }
+        assertEquals(g.vehicles(), g.vehicles(0));
+        assertEquals(1 + 10 * (1 + 1) + 10 * (10 + 1) + 889 + 10 * 9, g.vehicles(10).size(), "roles of 1, 10 and 88 or 89 seats");
+        assertThrows(IllegalArgumentException.class, () -> g.vehicles(-1));
+        assertThrows(IllegalArgumentException.class, () -> g.vehicles(GeneratedMission.MAX_SPARE_PERCENT + 1));
     }
 
     @Test
