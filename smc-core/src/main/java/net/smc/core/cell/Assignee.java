@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
+import net.smc.core.cell.TeamState.Answered;
 import net.smc.core.cell.TeamState.Incoming;
 import net.smc.core.cell.TeamState.Parent;
 import net.smc.core.message.AssignmentResponse;
@@ -22,6 +23,7 @@ import net.smc.core.message.PolicyRef;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
 import net.smc.core.message.RoleAssignment;
+import net.smc.core.message.Withdrawal;
 import net.smc.core.mission.Mission;
 import net.smc.core.role.RoleLoadException;
 import net.smc.core.transport.Address;
@@ -80,7 +82,32 @@ final class Assignee {
             merge.meetCommander(env.sender(), d.epoch());
             return;
         }
-        ctx.address(env.sender()).ifPresent(a -> ctx.sendWithoutHandshake(a, new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary())));
+        Optional<Address> to = ctx.address(env.sender());
+        if (to.isPresent()) {
+            ctx.sendWithoutHandshake(to.get(), new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary()));
+            long now = ctx.clock().nowMillis();
+            long window = ctx.timing().senderSettings().initialTimeoutMillis();
+            st.answered.values().removeIf(x -> now - x.atMillis() > window);
+            st.answered.put(env.sender(), new Answered(to.get(), env.id(), now));
+        }
+    }
+
+    /**
+     * This free vehicle is taking a role from {@code from}: the other managers whose discoveries it
+     * answered within the window in which a manager offers seats on answers (the first
+     * retransmission timeout) are told it withdraws them, so that none offers it a seat it would
+     * refuse (a round trip each, and a chain of them when siblings race for the last vehicles).
+     */
+    private void withdrawAnswers(String from) {
+        long now = ctx.clock().nowMillis();
+        long window = ctx.timing().senderSettings().initialTimeoutMillis();
+        for (Map.Entry<String, Answered> e : st.answered.entrySet()) {
+            Answered x = e.getValue();
+            if (!e.getKey().equals(from) && now - x.atMillis() <= window) {
+                ctx.sendWithoutHandshake(x.address(), new Withdrawal(x.discovery(), ctx.missionId()));
+            }
+        }
+        st.answered.clear();
     }
 
     /**
@@ -145,6 +172,7 @@ final class Assignee {
         st.incoming = new Incoming(from, back.get(), env.id(), a, ctx.clock().nowMillis());
         st.lastAssignmentFrom = from;
         st.lastAssignmentId = env.id();
+        withdrawAnswers(from);
         discoverEarly(a);
         // The role's own files come right behind the assignment (Recruiter sends them unasked), then
         // those of the roles it manages (this cell sends them to its children): the role starts

@@ -31,6 +31,7 @@ import net.smc.core.role.Caller;
 import net.smc.core.role.ExternalCallException;
 import net.smc.core.message.Roster;
 import net.smc.core.message.Status;
+import net.smc.core.message.Withdrawal;
 import net.smc.core.mission.Mission;
 import net.smc.core.role.RoleLoadException;
 import net.smc.core.router.MessageRouter;
@@ -205,6 +206,7 @@ final class TeamProtocol implements DiscoveryActions {
         route(router, MessageType.HEARTBEAT, Heartbeat.class, supervisor::onHeartbeat);
         route(router, MessageType.STATUS, Status.class, membership::onStatus);
         route(router, MessageType.ECHO, Echo.class, membership::onEcho);
+        route(router, MessageType.WITHDRAWAL, Withdrawal.class, recruiter::onWithdrawal);
         route(router, MessageType.SUBTREE_REPORT, SubtreeReport.class, reports::onReport);
         route(router, MessageType.ROLE_EVENT, RoleEvent.class, collaboration::onRoleEvent);
         route(router, MessageType.LEAVE, Leave.class, membership::onLeave);

@@ -8,12 +8,14 @@ import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageType;
 import net.smc.core.message.SharedDecodes;
+import net.smc.core.message.Withdrawal;
 import net.smc.core.transport.Address;
 
 /**
  * What a cell reads of a datagram before its authenticating transport has checked it (part of
  * {@link TeamProtocol}): the discoveries it would ignore whoever sent them, dropped before their
- * check, and the discovery replies a manager reads to choose whom to contact, held unchecked.
+ * check, and the discovery replies a manager reads to choose whom to contact, and their
+ * withdrawals, held unchecked.
  */
 final class UnverifiedReads {
     /** Where a message's type code sits in its datagram (after the magic and the version: {@code Header}). */
@@ -68,16 +70,27 @@ final class UnverifiedReads {
      * of one). A manager reads the answers to its discovery to choose whom to contact, and checks (a
      * credential verification, then a key agreement as it contacts the vehicle) only those it tries
      * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
+     * Or a withdrawal of such a reply, held in its place (the transport holds the newest datagram per
+     * source), which unchecked only puts the vehicle last ({@link Recruiter#onUnverifiedWithdrawal}).
      */
     boolean reads(byte[] data, int offset, int length) {
-        return length > TYPE_AT && (data[offset + TYPE_AT] & 0xFF) == MessageType.DISCOVERY_REPLY.code();
+        if (length <= TYPE_AT) {
+            return false;
+        }
+        int type = data[offset + TYPE_AT] & 0xFF;
+        return type == MessageType.DISCOVERY_REPLY.code() || type == MessageType.WITHDRAWAL.code();
     }
 
-    /** A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, for the recruiter's choice. */
+    /** A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, or to withdraw, for the recruiter's choice. */
     void onHeld(Address from, byte[] datagram) {
-        if (!stopped.getAsBoolean() && peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof DiscoveryReply r
-                && !d.envelope().sender().equals(ctx.self())) {
+        if (stopped.getAsBoolean() || !(peek.decode(datagram) instanceof DecodeResult.Decoded d)
+                || d.envelope().sender().equals(ctx.self())) {
+            return;
+        }
+        if (d.envelope().body() instanceof DiscoveryReply r) {
             recruiter.onUnverifiedReply(d.envelope().sender(), from, r);
+        } else if (d.envelope().body() instanceof Withdrawal w) {
+            recruiter.onUnverifiedWithdrawal(d.envelope().sender(), w);
         }
     }
 }

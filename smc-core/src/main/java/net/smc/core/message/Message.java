@@ -12,7 +12,7 @@ package net.smc.core.message;
 public sealed interface Message permits Discovery, DiscoveryReply, CapabilityRequest, CapabilityReply,
         RoleAssignment, AssignmentResponse, PolicyRequest, PolicyReply, Heartbeat, Ack, RoleEvent,
         Invocation, InvocationResult, Leave, Status, Acks, Roster, SubtreeReport,
-        CellRequest, Echo {
+        CellRequest, Echo, Withdrawal {
 
     /** The type of this message, which names it on the wire and in the Message-Router. */
     MessageType type();

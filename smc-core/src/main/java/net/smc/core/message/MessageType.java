@@ -23,6 +23,7 @@ package net.smc.core.message;
  * <tr><td>0x08</td><td>POLICY_REPLY</td><td>0x10</td><td>ACKS</td></tr>
  * <tr><td>0x11</td><td>ROSTER</td><td>0x12</td><td>SUBTREE_REPORT</td></tr>
  * <tr><td>0x13</td><td>CELL_REQUEST</td><td>0x14</td><td>ECHO</td></tr>
+ * <tr><td>0x15</td><td>WITHDRAWAL</td><td></td><td></td></tr>
  * <tr><td></td><td></td><td>0xFF</td><td>(fragment frame, reserved)</td></tr>
  * </table>
  */
@@ -46,7 +47,8 @@ public enum MessageType {
     ROSTER(0x11),
     SUBTREE_REPORT(0x12),
     CELL_REQUEST(0x13),
-    ECHO(0x14);
+    ECHO(0x14),
+    WITHDRAWAL(0x15);
 
     private static final MessageType[] BY_CODE = new MessageType[256];
 

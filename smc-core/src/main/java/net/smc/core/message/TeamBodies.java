@@ -119,8 +119,15 @@ final class TeamBodies {
             },
             TeamBodies::readRoster);
 
+    static final BodyCodec<Withdrawal> WITHDRAWAL = new BodyCodec<>(MessageType.WITHDRAWAL, Withdrawal.class,
+            (m, w) -> {
+                w.i64(m.inReplyTo());
+                w.string8(m.mission());
+            },
+            r -> new Withdrawal(r.i64("inReplyTo"), r.name("mission")));
+
     static final List<BodyCodec<?>> ALL = List.of(DISCOVERY, DISCOVERY_REPLY, CAPABILITY_REQUEST, CAPABILITY_REPLY,
-            ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, STATUS, LEAVE, ROSTER);
+            ROLE_ASSIGNMENT, ASSIGNMENT_RESPONSE, STATUS, LEAVE, ROSTER, WITHDRAWAL);
 
     private static RoleAssignment readRoleAssignment(DatagramReader r) throws DecodeException {
         String mission = r.name("mission");

@@ -64,7 +64,7 @@ class DecoderRejectionTest {
 
     @Test
     void unassignedTypeCode_isUnknownType() {
-        for (int code : new int[] {0x00, 0x15, 0xFE}) {
+        for (int code : new int[] {0x00, 0x16, 0xFE}) {
             Raw raw = heartbeat();
             raw.type = code;
             reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 28 bytes: type code 0x%02X is"

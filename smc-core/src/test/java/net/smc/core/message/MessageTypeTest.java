@@ -16,7 +16,7 @@ class MessageTypeTest {
         int code = 1;
         for (String name : new String[] {"DISCOVERY", "DISCOVERY_REPLY", "CAPABILITY_REQUEST", "CAPABILITY_REPLY",
                 "ROLE_ASSIGNMENT", "ASSIGNMENT_RESPONSE", "POLICY_REQUEST", "POLICY_REPLY", "HEARTBEAT", "ACK",
-                "ROLE_EVENT", "INVOCATION", "INVOCATION_RESULT", "LEAVE", "STATUS", "ACKS", "ROSTER", "SUBTREE_REPORT", "CELL_REQUEST", "ECHO"}) {
+                "ROLE_EVENT", "INVOCATION", "INVOCATION_RESULT", "LEAVE", "STATUS", "ACKS", "ROSTER", "SUBTREE_REPORT", "CELL_REQUEST", "ECHO", "WITHDRAWAL"}) {
             expected.put(MessageType.valueOf(name), code++);
         }
         Map<MessageType, Integer> actual = new LinkedHashMap<>();
@@ -35,9 +35,9 @@ class MessageTypeTest {
 
     @Test
     void fromCode_refusesReservedAndUnassignedCodes() {
-        for (int code : new int[] {0x00, 0x15, WireFormat.FRAGMENT_CODE, -1, 256}) {
+        for (int code : new int[] {0x00, 0x16, WireFormat.FRAGMENT_CODE, -1, 256}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> MessageType.fromCode(code));
-            assertEquals("message type code " + code + " is not assigned; assigned codes are 1 to 20", e.getMessage());
+            assertEquals("message type code " + code + " is not assigned; assigned codes are 1 to 21", e.getMessage());
         }
     }
 }

@@ -35,7 +35,7 @@ import net.smc.sim.team.TeamSimulation;
 class LevelLatencyTest {
     private static final int ROLES = 20;
     /** The costs of docs/fig8-costs.properties (the README's set-up time table), rounded to 0.1 us. */
-    private static final CpuCosts FIG8_COSTS = new CpuCosts(241_635.8, 350_298.8, 676_307.1, 11_749.5, 0, 858.4, 8.6, 4_617.4, 2_445.5,
+    static final CpuCosts FIG8_COSTS = new CpuCosts(241_635.8, 350_298.8, 676_307.1, 11_749.5, 0, 858.4, 8.6, 4_617.4, 2_445.5,
             CpuCosts.DEFAULT_DEFLATE_NANOS_PER_BYTE, CpuCosts.DEFAULT_INFLATE_NANOS_PER_BYTE);
 
     @TempDir
