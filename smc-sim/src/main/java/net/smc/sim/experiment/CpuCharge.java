@@ -48,7 +48,8 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *       decoding only, and no contact is made. When the receiver checks it later
  *       ({@link #heldChecked}) that check (the credential's verification and the signature's, or
  *       a MAC when the two have met) is charged with the receiver's next datagram; the first contact
- *       follows when one of the two sends the other something.</li>
+ *       follows when one of the two sends the other something. A withdrawal of a discovery reply goes
+ *       and is held the same way.</li>
  * </ul>
  * Vehicles are known by the sender field of the datagrams they send. Also counts the datagrams and
  * bytes sent (a broadcast once: one radio transmission). Deterministic: no clock, no randomness.
@@ -132,7 +133,8 @@ public final class CpuCharge implements CpuModel {
         }
         if (to == null) {
             ns += charge(node, Category.SIGN, costs.signNanos());
-        } else if (type == MessageType.DISCOVERY_REPLY.code() && !node.met(node(to))) {
+        } else if ((type == MessageType.DISCOVERY_REPLY.code() || type == MessageType.WITHDRAWAL.code())
+                && !node.met(node(to))) {
             ns += charge(node, Category.SIGN, costs.signNanos()); // signed, no handshake: no contact yet
         } else {
             ns += charge(node, Category.MAC, mac(data.length));

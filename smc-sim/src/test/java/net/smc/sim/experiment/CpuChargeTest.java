@@ -17,6 +17,7 @@ import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.MessageEncoder;
 import net.smc.core.message.PolicyReply;
+import net.smc.core.message.Withdrawal;
 import net.smc.core.security.IdealAuthentication;
 import net.smc.core.transport.Address;
 import net.smc.sim.experiment.CpuLedger.Category;
@@ -242,5 +243,24 @@ class CpuChargeTest {
         assertEquals((2 * COSTS.verifyNanos() + COSTS.signNanos() + COSTS.agreeNanos()) / 1e6,
                 ledger.millisByCategory(0).get(Category.HANDSHAKE), 1e-9,
                 "the held reply's check (credential and signature), then the first contact's signature and agreement");
+    }
+
+    /** A withdrawal of a discovery reply goes as the reply does: signed, no handshake, held unchecked by its receiver. */
+    @Test
+    void aWithdrawalToAManagerNotMetIsSignedAndStartsNoHandshake_heldItCostsItsDecoding() {
+        byte[] message = new MessageEncoder().datagrams(new Envelope("b0l2n0", 8, new Withdrawal(3, "m"))).get(0);
+        byte[] withdrawal = ByteBuffer.allocate(message.length + 16).putLong(43).put(message).putLong(99).array();
+        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
+                (at, data) -> false, (at, data) -> at.equals(manager) && data == withdrawal);
+        introduce(charge, manager, "b0l1n0");                    // node 0
+        charge.sendMicros(vehicle, manager, withdrawal);         // node 1
+        Map<Category, Double> sent = charge.ledger().millisByCategory(1);
+        assertEquals(COSTS.signNanos() / 1e6, sent.get(Category.SIGN), 1e-9, "signed");
+        assertFalse(sent.containsKey(Category.HANDSHAKE), "no handshake started");
+        double before = charge.ledger().totalMillis(0);
+        charge.receiveMicros(manager, vehicle, withdrawal, false);
+        assertEquals((COSTS.codecNanos() + COSTS.codecNanosPerByte() * withdrawal.length) / 1e6,
+                charge.ledger().totalMillis(0) - before, 1e-9, "held: decoding only");
+        assertEquals(Map.of("WITHDRAWAL", 1L), charge.ledger().heldUnverifiedByKind(0));
     }
 }
