@@ -29,7 +29,9 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *   <li>a {@code PolicyReply} of a policy its receiver loads (given by {@code loads}: the files of
  *       the role it takes, not the copies a manager keeps to serve the roles below it or a backup
  *       commander keeps of the mission) costs the parsing and loading of the text it carries, per
- *       byte of text (of the whole message when fragmented, charged with its first fragment);</li>
+ *       byte of text (of the whole message when fragmented, charged with its first fragment), once
+ *       per file and version: the same file sent again (by another manager that offered the vehicle
+ *       the same role, behind an assignment it refused) is stored, not loaded again;</li>
  *   <li>a {@code PolicyReply} whose text is {@link WireFormat#MIN_DEFLATED_POLICY_TEXT} bytes or
  *       more costs its sender the deflating of the text (the encoder deflates every such text and
  *       sends the deflated form when shorter), and one that came deflated costs its receiver the
@@ -171,7 +173,7 @@ public final class CpuCharge implements CpuModel {
                 if (text.deflated()) {
                     ns += charge(node, Category.INFLATE, costs.inflateNanosPerByte() * text.bytes());
                 }
-                if (node.vehicle != null && loads.test(node.vehicle, text.uri())) {
+                if (node.vehicle != null && loads.test(node.vehicle, text.uri()) && node.firstLoad(text.uri(), text.version())) {
                     ns += charge(node, Category.POLICY_LOAD, costs.loadNanosPerByte() * text.bytes());
                 }
             }
@@ -247,7 +249,7 @@ public final class CpuCharge implements CpuModel {
     }
 
     /** What is read of a {@code PolicyReply}'s first datagram: the policy's URI, its text's UTF-8 length and coding. */
-    private record PolicyText(String uri, int bytes, boolean deflated) {
+    private record PolicyText(String uri, int version, int bytes, boolean deflated) {
     }
 
     /**
@@ -273,7 +275,8 @@ public final class CpuCharge implements CpuModel {
         if (textAt + 3 > data.length) {
             return null;
         }
-        return new PolicyText(new String(data, uriAt + 1, n, StandardCharsets.UTF_8), u16(data, textAt),
+        int version = (data[textAt - 4] & 0xFF) << 24 | (data[textAt - 3] & 0xFF) << 16 | u16(data, textAt - 2);
+        return new PolicyText(new String(data, uriAt + 1, n, StandardCharsets.UTF_8), version, u16(data, textAt),
                 (data[textAt + 2] & 0xFF) == WireFormat.POLICY_TEXT_DEFLATE);
     }
 
@@ -331,6 +334,18 @@ public final class CpuCharge implements CpuModel {
 
         Node(int number) {
             this.number = number;
+        }
+
+        /** The policy files this node was charged the loading of. */
+        final Set<String> loaded = new HashSet<>();
+
+        /**
+         * Whether version {@code version} of the file {@code uri} is loaded for the first time here:
+         * a vehicle offered the same role by several managers gets its files from each, stores them,
+         * and loads them once, as its role starts.
+         */
+        boolean firstLoad(String uri, int version) {
+            return loaded.add(uri + "@" + version);
         }
 
         /** Whether the message {@code id} from {@code from} is new here (its first copy). */

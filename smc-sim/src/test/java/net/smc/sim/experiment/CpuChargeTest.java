@@ -40,9 +40,13 @@ class CpuChargeTest {
     private static final java.util.concurrent.atomic.AtomicLong IDS = new java.util.concurrent.atomic.AtomicLong(7);
 
     private static List<byte[]> sealedPolicyReply(String sender, String uri, String text) {
+        return sealedPolicyReply(sender, uri, 1, text);
+    }
+
+    private static List<byte[]> sealedPolicyReply(String sender, String uri, int version, String text) {
         List<byte[]> sealed = new ArrayList<>();
-        for (byte[] message : new MessageEncoder().datagrams(new Envelope(sender, IDS.getAndIncrement(), new PolicyReply(1, uri, 1,
-                text)))) {
+        for (byte[] message : new MessageEncoder().datagrams(new Envelope(sender, IDS.getAndIncrement(), new PolicyReply(1, uri,
+                version, text)))) {
             sealed.add(ByteBuffer.allocate(message.length + 16).putLong(42).put(message).putLong(99).array());
         }
         return sealed;
@@ -97,8 +101,12 @@ class CpuChargeTest {
         assertEquals(once.get(Category.INFLATE), twice.get(Category.INFLATE), 1e-12);
         assertTrue(twice.get(Category.CODEC) > once.get(Category.CODEC), "the copy is still decoded");
         assertTrue(second < first, second + " us against " + first);
-        // Another message with the same text is loaded again.
-        charge.receiveMicros(vehicle, manager, sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", text).get(0), false);
+        // Another message of the same file and version (another manager's, behind an assignment the
+        // vehicle refused) is stored, not loaded again; a new version is loaded.
+        charge.receiveMicros(vehicle, manager, sealedPolicyReply("b0l0n1", "policy:/roles/b0l1/mission", text).get(0), false);
+        assertEquals(COSTS.loadNanosPerByte() * text.length() / 1e6, charge.ledger().millisByCategory(0)
+                .get(Category.POLICY_LOAD), 1e-9);
+        charge.receiveMicros(vehicle, manager, sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", 2, text).get(0), false);
         assertEquals(2 * COSTS.loadNanosPerByte() * text.length() / 1e6, charge.ledger().millisByCategory(0)
                 .get(Category.POLICY_LOAD), 1e-9);
     }
