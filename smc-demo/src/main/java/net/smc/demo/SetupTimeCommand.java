@@ -292,20 +292,26 @@ final class SetupTimeCommand implements Callable<Integer> {
         }
     }
 
+    /** The most radio hops, and the longest hop latency or jitter, the options take. */
+    private static final int MAX_HOPS = 100;
+    private static final long MAX_HOP_MILLIS = 60_000;
+
     /**
      * The radio network of the simulated runs: {@link RadioNetwork#ADHOC_80211} with what the options
-     * give in its place; a value the model refuses is a usage error naming the option.
+     * give in its place; a value out of range is a usage error naming the option.
      */
     private RadioNetwork radio() {
         RadioNetwork model = RadioNetwork.ADHOC_80211;
-        if (hops != null && hops < 1) {
-            throw new ParameterException(spec.commandLine(), "--hops " + hops + ": it must be 1 or more");
+        if (hops != null && (hops < 1 || hops > MAX_HOPS)) {
+            throw new ParameterException(spec.commandLine(), "--hops " + hops + ": it must be from 1 to " + MAX_HOPS);
         }
-        if (hopLatencyMillis != null && hopLatencyMillis < 0) {
-            throw new ParameterException(spec.commandLine(), "--hop-latency " + hopLatencyMillis + ": it must be 0 ms or more");
+        if (hopLatencyMillis != null && (hopLatencyMillis < 0 || hopLatencyMillis > MAX_HOP_MILLIS)) {
+            throw new ParameterException(spec.commandLine(), "--hop-latency " + hopLatencyMillis + ": it must be from 0 to "
+                    + MAX_HOP_MILLIS + " ms");
         }
-        if (hopJitterMillis != null && hopJitterMillis < 0) {
-            throw new ParameterException(spec.commandLine(), "--hop-jitter " + hopJitterMillis + ": it must be 0 ms or more");
+        if (hopJitterMillis != null && (hopJitterMillis < 0 || hopJitterMillis > MAX_HOP_MILLIS)) {
+            throw new ParameterException(spec.commandLine(), "--hop-jitter " + hopJitterMillis + ": it must be from 0 to "
+                    + MAX_HOP_MILLIS + " ms");
         }
         if (bandwidthMbit != null && !(bandwidthMbit >= 1e-5 && bandwidthMbit <= 1e6)) {
             throw new ParameterException(spec.commandLine(), "--bandwidth " + bandwidthMbit

@@ -147,9 +147,11 @@ class SetupTimeCommandTest {
         String[][] cases = {
             {"--loss", "1", "--loss 1.0: it must be from 0 to below 1"},
             {"--loss", "-0.5", "--loss -0.5: it must be from 0 to below 1"},
-            {"--hops", "0", "--hops 0: it must be 1 or more"},
-            {"--hop-latency", "-1", "--hop-latency -1: it must be 0 ms or more"},
-            {"--hop-jitter", "-3", "--hop-jitter -3: it must be 0 ms or more"},
+            {"--hops", "0", "--hops 0: it must be from 1 to 100"},
+            {"--hops", "101", "--hops 101: it must be from 1 to 100"},
+            {"--hop-latency", "-1", "--hop-latency -1: it must be from 0 to 60000 ms"},
+            {"--hop-latency", "9223372036854775807", "--hop-latency 9223372036854775807: it must be from 0 to 60000 ms"},
+            {"--hop-jitter", "-3", "--hop-jitter -3: it must be from 0 to 60000 ms"},
             {"--bandwidth", "0", "--bandwidth 0.0: it must be from 0.00001 to 1000000 Mbit/s"},
             {"--bandwidth", "NaN", "--bandwidth NaN: it must be from 0.00001 to 1000000 Mbit/s"},
         };
