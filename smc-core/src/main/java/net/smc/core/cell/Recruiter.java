@@ -108,7 +108,6 @@ final class Recruiter {
         }
         long now = ctx.clock().nowMillis();
         st.heard.put(env.sender(), new Heard(r.summary(), now));
-        st.answeredAgain(env.sender(), r.inReplyTo());
         if (batches.isChecking(env.sender())) {
             return; // a held reply checked now: who asked for the check decides on it, and measures it
         }
@@ -126,26 +125,15 @@ final class Recruiter {
     }
 
     /**
-     * A vehicle that answered one of this cell's discoveries is taking a role from another manager,
-     * checked: as {@link #onUnverifiedWithdrawal}. (One held in place of the vehicle's answer is
-     * checked when this manager comes to that vehicle, which is then passed over: no answer passed.)
+     * A vehicle that answered one of this cell's discoveries is taking a role from another manager
+     * (checked: most often the datagram held from that vehicle in place of its answer, checked as
+     * this manager came to it): its answer no longer holds, and is forgotten.
      */
     void onWithdrawal(Envelope env, Withdrawal w) {
-        onUnverifiedWithdrawal(env.sender(), w);
-    }
-
-    /**
-     * A withdrawal read before it was checked ({@code UnverifiedReads}), or after: the answer of
-     * {@code claimed} to the discovery it names goes to the policies after every other. Only an
-     * answer this manager holds is marked, and only one to one of its latest discoveries.
-     */
-    void onUnverifiedWithdrawal(String claimed, Withdrawal w) {
-        if ((st.owned.isEmpty() && st.incoming == null) || !w.mission().equals(ctx.missionId())
-                || !st.discoveries.answersOurs(w.inReplyTo())
-                || !st.heard.containsKey(claimed) && !st.unchecked.containsKey(claimed)) {
-            return;
+        if (w.mission().equals(ctx.missionId()) && st.discoveries.answersOurs(w.inReplyTo())) {
+            st.forgetAnswer(env.sender());
+            st.earlyReplies.remove(env.sender());
         }
-        st.withdrawn.merge(claimed, w.inReplyTo(), Math::max);
     }
 
     /** A discovery reply the transport holds unchecked ({@link ReplyBatches#addUnchecked}). */

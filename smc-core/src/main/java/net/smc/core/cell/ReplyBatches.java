@@ -1,6 +1,5 @@
 package net.smc.core.cell;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -76,7 +75,6 @@ final class ReplyBatches {
             return; // a copy of the answer held (a network duplicate, a replay): no newer answer
         }
         st.unchecked.put(claimed, new Unchecked(from, ctx.clock().nowMillis(), r.inReplyTo()));
-        st.answeredAgain(claimed, r.inReplyTo());
         if (st.owned.isEmpty()) {
             st.earlyReplies.add(claimed);
             return;
@@ -246,15 +244,7 @@ final class ReplyBatches {
         if (first.isEmpty()) {
             return;
         }
-        List<String> ordered = SiblingOrder.of(vehicles, first.get(), ctx.slots());
-        if (!st.withdrawn.isEmpty()) {
-            // Answers withdrawn (the vehicle is taking a role elsewhere) last: it would most likely refuse.
-            List<String> withdrawnLast = new ArrayList<>(ordered.size());
-            ordered.stream().filter(v -> !st.withdrawn.containsKey(v)).forEach(withdrawnLast::add);
-            ordered.stream().filter(st.withdrawn::containsKey).forEach(withdrawnLast::add);
-            ordered = withdrawnLast;
-        }
-        for (String vehicle : ordered) {
+        for (String vehicle : SiblingOrder.of(vehicles, first.get(), ctx.slots())) {
             if (!st.hasVacancy()) {
                 return;
             }

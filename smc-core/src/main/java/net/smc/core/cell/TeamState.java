@@ -115,14 +115,6 @@ final class TeamState {
     /** A discovery answered: the manager's address, the discovery's id, when. */
     record Answered(Address address, long discovery, long atMillis) {
     }
-
-    /**
-     * Vehicles whose answer to one of this manager's discoveries was withdrawn (they are taking a
-     * role from another manager), by the discovery the withdrawal names: put to the policies after
-     * every other answer (ReplyBatches), until they answer a later discovery. A withdrawal is read
-     * unchecked, so it only orders: a forged one puts a free vehicle last, never out.
-     */
-    final Map<String, Long> withdrawn = new HashMap<>();
     /**
      * The end of this manager's time of taking only its own share of the ring (a short time after
      * its role started; far in the past: none): a vehicle of a sibling's share is decided on only once
@@ -162,15 +154,6 @@ final class TeamState {
     void forgetAnswer(String vehicle) {
         heard.remove(vehicle);
         unchecked.remove(vehicle);
-        withdrawn.remove(vehicle);
-    }
-
-    /** A later answer of {@code vehicle} than the one it withdrew: it is free again. */
-    void answeredAgain(String vehicle, long inReplyTo) {
-        Long w = withdrawn.get(vehicle);
-        if (w != null && inReplyTo > w) {
-            withdrawn.remove(vehicle);
-        }
     }
 
     /** A child's policy request waiting for the file to reach this cell. */

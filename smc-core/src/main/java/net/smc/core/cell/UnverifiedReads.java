@@ -8,7 +8,6 @@ import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageType;
 import net.smc.core.message.SharedDecodes;
-import net.smc.core.message.Withdrawal;
 import net.smc.core.transport.Address;
 
 /**
@@ -70,8 +69,9 @@ final class UnverifiedReads {
      * of one). A manager reads the answers to its discovery to choose whom to contact, and checks (a
      * credential verification, then a key agreement as it contacts the vehicle) only those it tries
      * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
-     * Or a withdrawal of such a reply, held in its place (the transport holds the newest datagram per
-     * source), which unchecked only puts the vehicle last ({@link Recruiter#onUnverifiedWithdrawal}).
+     * Or a withdrawal of such a reply ({@link Recruiter#onWithdrawal}), held in its place (the
+     * transport holds the newest datagram per source): unchecked it is not acted on; if the manager
+     * comes to that vehicle, what it checks is the withdrawal, and the vehicle is passed over.
      */
     boolean reads(byte[] data, int offset, int length) {
         if (length <= TYPE_AT) {
@@ -81,16 +81,12 @@ final class UnverifiedReads {
         return type == MessageType.DISCOVERY_REPLY.code() || type == MessageType.WITHDRAWAL.code();
     }
 
-    /** A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, or to withdraw, for the recruiter's choice. */
+    /** A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, for the recruiter's choice. */
     void onHeld(Address from, byte[] datagram) {
-        if (stopped.getAsBoolean() || !(peek.decode(datagram) instanceof DecodeResult.Decoded d)
-                || d.envelope().sender().equals(ctx.self())) {
-            return;
-        }
-        if (d.envelope().body() instanceof DiscoveryReply r) {
+        // A withdrawal held is not read: it has displaced the answer held from the same source.
+        if (!stopped.getAsBoolean() && peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof DiscoveryReply r
+                && !d.envelope().sender().equals(ctx.self())) {
             recruiter.onUnverifiedReply(d.envelope().sender(), from, r);
-        } else if (d.envelope().body() instanceof Withdrawal w) {
-            recruiter.onUnverifiedWithdrawal(d.envelope().sender(), w);
         }
     }
 }
