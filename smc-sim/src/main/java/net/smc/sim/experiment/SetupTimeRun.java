@@ -244,7 +244,30 @@ public final class SetupTimeRun {
             }
             return String.format(Locale.ROOT, "slowest %d of L%d, on average: manager started %.0f ms, first assignment "
                     + "%.0f ms later, last %.0f ms after the first (%.2f assignments a seat), role started %.0f ms after "
-                    + "the last\n", n, deepest, manager / n, first / n, retry / n, count / n, deliver / n);
+                    + "the last\n", n, deepest, manager / n, first / n, retry / n, count / n, deliver / n)
+                    + latest(leaves.subList(Math.max(0, leaves.size() - 3), leaves.size()));
+        }
+
+        /**
+         * One line on each of {@code last} (the deepest level's last seats to start, in start order), the
+         * latest first: when it started, and when its manager started and sent it its first and last
+         * assignment, ms after the commander's start (the tail of one run: which seat waited, and on what).
+         */
+        private String latest(List<Map.Entry<String, Long>> last) {
+            StringBuilder s = new StringBuilder();
+            for (int i = last.size() - 1; i >= 0; i--) {
+                Map.Entry<String, Long> en = last.get(i);
+                long[] t = tries.get(en.getKey());
+                String manager = managerOf.get(en.getKey());
+                Long parent = vehicleStarted.get(manager);
+                if (t == null) {
+                    continue;
+                }
+                s.append(String.format(Locale.ROOT, "  %s started at %d: its manager %s at %d, first assignment at %d, "
+                        + "last at %d (%d sent)\n", en.getKey(), en.getValue() - start, manager,
+                        (parent == null ? start : parent) - start, t[0] - start, t[1] - start, t[2]));
+            }
+            return s.toString();
         }
 
         /** The tree level of {@code seat}'s role, or -1 for a seat of no generated role. */

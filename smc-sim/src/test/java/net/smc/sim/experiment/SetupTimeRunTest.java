@@ -105,6 +105,25 @@ class SetupTimeRunTest {
         assertEquals(last, parts, 2, text); // one seat: its start, each part rounded
         assertTrue(Double.parseDouble(tail.group(5)) >= 1.0, text);
         assertTrue(ninety <= last, text);
+        // The last seats of L3, latest first: the first started when the set-up ended, each after its assignments.
+        java.util.regex.Matcher seat = java.util.regex.Pattern.compile("  (\\S+#\\d+) started at (\\d+): its manager (\\S+) at "
+                + "(\\d+), first assignment at (\\d+), last at (\\d+) \\((\\d+) sent\\)\n").matcher(text);
+        long previous = Long.MAX_VALUE;
+        int seats = 0;
+        while (seat.find()) {
+            long started = Long.parseLong(seat.group(2));
+            long managerStarted = Long.parseLong(seat.group(4));
+            long firstSent = Long.parseLong(seat.group(5));
+            long lastSent = Long.parseLong(seat.group(6));
+            if (seats == 0) {
+                assertEquals(last, started, text);
+            }
+            assertTrue(started <= previous && managerStarted <= firstSent && firstSent <= lastSent && lastSent <= started, text);
+            assertTrue(Integer.parseInt(seat.group(7)) >= 1 && seat.group(1).startsWith("b") && seat.group(3).matches("cdr|b\\d+l2n\\d+"), text);
+            previous = started;
+            seats++;
+        }
+        assertEquals(3, seats, text);
     }
 
     /**
