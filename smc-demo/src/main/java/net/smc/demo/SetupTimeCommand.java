@@ -137,8 +137,9 @@ final class SetupTimeCommand implements Callable<Integer> {
     int sparePercent;
 
     @Option(names = "--verbose", description = {"After each simulated run, a report on standard output: when the roles "
-            + "of each level of the tree started, where the slowest of the deepest level's roles waited, the busiest cell's charged CPU by category and the datagrams it "
-            + "received by kind, and the team's datagrams and bytes by kind."})
+            + "of each level of the tree started, where the slowest of the deepest level's roles waited, the "
+            + "busiest cell's charged CPU by category and the datagrams it received by kind, and the team's "
+            + "datagrams and bytes by kind."})
     boolean verbose;
 
     SetupTimeCommand(Io io) {
