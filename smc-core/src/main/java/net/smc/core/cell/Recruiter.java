@@ -133,7 +133,28 @@ final class Recruiter {
         if (w.mission().equals(ctx.missionId()) && st.discoveries.answersOurs(w.inReplyTo())) {
             st.forgetAnswer(env.sender());
             st.earlyReplies.remove(env.sender());
+            pendingFor(env.sender()).ifPresent(seat -> answers.assignmentFailed(env.sender(), seat,
+                    "withdrew its answer: it is taking a role from another manager"));
         }
+    }
+
+    /**
+     * A withdrawal held unchecked from a vehicle that claims to be {@code claimed}. Held, it waits
+     * until this manager comes to that vehicle; but if a seat is already on its way to the vehicle
+     * (the assignment went out before the withdrawal came), the vehicle will refuse it, and the
+     * refusal, a round trip later, may be lost and wait for its timeout: so the withdrawal is checked
+     * now, and if it passes, the seat is open again at once ({@link #onWithdrawal}). A forged one
+     * costs one check and changes nothing.
+     */
+    void onUnverifiedWithdrawal(String claimed, Address from, Withdrawal w) {
+        if (w.mission().equals(ctx.missionId()) && st.discoveries.answersOurs(w.inReplyTo()) && pendingFor(claimed).isPresent()) {
+            ctx.host().checkHeld(from);
+        }
+    }
+
+    /** The seat this manager is giving {@code vehicle} now (an assignment sent, no answer yet), if any. */
+    private Optional<Seat> pendingFor(String vehicle) {
+        return st.owned.entrySet().stream().filter(e -> vehicle.equals(e.getValue().pendingFor)).map(Map.Entry::getKey).findFirst();
     }
 
     /** A discovery reply the transport holds unchecked ({@link ReplyBatches#addUnchecked}). */

@@ -8,6 +8,7 @@ import net.smc.core.message.DiscoveryReply;
 import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageType;
 import net.smc.core.message.SharedDecodes;
+import net.smc.core.message.Withdrawal;
 import net.smc.core.transport.Address;
 
 /**
@@ -71,7 +72,8 @@ final class UnverifiedReads {
      * to seat ({@link Recruiter#onUnverifiedReply}); the reply itself is acted on only once checked.
      * Or a withdrawal of such a reply ({@link Recruiter#onWithdrawal}), held in its place (the
      * transport holds the newest datagram per source): unchecked it is not acted on; if the manager
-     * comes to that vehicle, what it checks is the withdrawal, and the vehicle is passed over.
+     * comes to that vehicle, what it checks is the withdrawal, and the vehicle is passed over; if a
+     * seat is already on its way to that vehicle, it is checked at once, and the seat opens again.
      */
     boolean reads(byte[] data, int offset, int length) {
         if (length <= TYPE_AT) {
@@ -81,12 +83,21 @@ final class UnverifiedReads {
         return type == MessageType.DISCOVERY_REPLY.code() || type == MessageType.WITHDRAWAL.code();
     }
 
-    /** A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, for the recruiter's choice. */
+    /**
+     * A payload held unchecked ({@link #reads}) from {@code from}: who claims to answer, for the
+     * recruiter's choice; or who claims to withdraw its answer, for a recruiter waiting on that
+     * vehicle's answer to an assignment ({@link Recruiter#onUnverifiedWithdrawal}). A withdrawal held
+     * has displaced the answer held from the same source.
+     */
     void onHeld(Address from, byte[] datagram) {
-        // A withdrawal held is not read: it has displaced the answer held from the same source.
-        if (!stopped.getAsBoolean() && peek.decode(datagram) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof DiscoveryReply r
-                && !d.envelope().sender().equals(ctx.self())) {
+        if (stopped.getAsBoolean() || !(peek.decode(datagram) instanceof DecodeResult.Decoded d)
+                || d.envelope().sender().equals(ctx.self())) {
+            return;
+        }
+        if (d.envelope().body() instanceof DiscoveryReply r) {
             recruiter.onUnverifiedReply(d.envelope().sender(), from, r);
+        } else if (d.envelope().body() instanceof Withdrawal w) {
+            recruiter.onUnverifiedWithdrawal(d.envelope().sender(), from, w);
         }
     }
 }
