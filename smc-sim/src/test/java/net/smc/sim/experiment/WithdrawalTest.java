@@ -39,6 +39,16 @@ class WithdrawalTest {
     @TempDir
     Path dir;
 
+    /** The message type code of a datagram on the team simulation's network, -1 when too short. */
+    private static int typeOf(byte[] data) {
+        return data.length > TYPE_AT ? data[TYPE_AT] & 0xFF : -1;
+    }
+
+    /** "vehicle>manager", the key of a pair of cells' datagrams. */
+    private static String pair(Address from, Address to) {
+        return from + ">" + to;
+    }
+
     @Test
     void aVehicleTakingARole_withdrawsItsLatestAnswers_fromTheOtherManagersOnly_whichHoldThemUnchecked() throws Exception {
         GeneratedMission g = MissionGenerator.write(TreeShape.of(200, 4), dir, Project.bootEvents());
@@ -52,12 +62,12 @@ class WithdrawalTest {
         sim.network().addObserver(new NetworkObserver() {
             @Override
             public void sent(long atMillis, Address from, Address to, byte[] data) {
-                int type = data.length > TYPE_AT ? data[TYPE_AT] & 0xFF : -1;
+                int type = typeOf(data);
                 if (type == MessageType.DISCOVERY_REPLY.code()) {
-                    answered.put(from + ">" + to, atMillis);
+                    answered.put(pair(from, to), atMillis);
                 } else if (type == MessageType.WITHDRAWAL.code()) {
                     withdrawals[0]++;
-                    Long at = answered.get(from + ">" + to);
+                    Long at = answered.get(pair(from, to));
                     assertTrue(at != null && atMillis - at <= WINDOW_MILLIS,
                             () -> from + " withdrew from " + to + " an answer it gave at " + at + ", now " + atMillis);
                     assertTrue(assignedBy.containsKey(from), () -> from + " withdrew before any assignment reached it");
@@ -67,7 +77,7 @@ class WithdrawalTest {
 
             @Override
             public void delivered(long atMillis, Address from, Address to, byte[] data) {
-                int type = data.length > TYPE_AT ? data[TYPE_AT] & 0xFF : -1;
+                int type = typeOf(data);
                 if (type == MessageType.ROLE_ASSIGNMENT.code()) {
                     assignedBy.put(to, from);
                 } else if (type == MessageType.WITHDRAWAL.code()) {
@@ -136,11 +146,11 @@ class WithdrawalTest {
         sim.network().addObserver(new NetworkObserver() {
             @Override
             public void delivered(long atMillis, Address from, Address to, byte[] data) {
-                int type = data.length > TYPE_AT ? data[TYPE_AT] & 0xFF : -1;
+                int type = typeOf(data);
                 if (type == MessageType.WITHDRAWAL.code()) {
-                    withdrawn.putIfAbsent(from + ">" + to, atMillis);
+                    withdrawn.putIfAbsent(pair(from, to), atMillis);
                 } else if (type == MessageType.ASSIGNMENT_RESPONSE.code()) {
-                    responded.put(from + ">" + to, atMillis);
+                    responded.put(pair(from, to), atMillis);
                 }
             }
         });
@@ -149,7 +159,7 @@ class WithdrawalTest {
                 "the team formed");
         assertFalse(reopened.isEmpty(), "no seat opened on a withdrawal");
         for (String[] r : reopened) {
-            String key = sim.address(r[1]) + ">" + sim.address(r[0]);
+            String key = pair(sim.address(r[1]), sim.address(r[0]));
             long at = Long.parseLong(r[2]);
             Long came = withdrawn.get(key);
             Long refusal = responded.get(key);
