@@ -56,6 +56,20 @@ final class LossDetector {
         trim(acked.to, queue);
     }
 
+    /**
+     * {@code acked}, sent again as a tail probe, was acknowledged: as {@link #acked}, the messages sent
+     * once to the same peer before its first copy are suspected, if it is still held (when it is not,
+     * every message before it was done already).
+     */
+    void ackedAgain(Pending acked, Consumer<Pending> suspect) {
+        ArrayDeque<Pending> queue = sentOnce.get(acked.to);
+        if (queue != null && queue.contains(acked)) {
+            acked(acked, suspect);
+        } else {
+            settled(acked);
+        }
+    }
+
     /** {@code p} settled (acknowledged after a retransmission, or failed): its peer's queue lets go of what is done. */
     void settled(Pending p) {
         ArrayDeque<Pending> queue = sentOnce.get(p.to);

@@ -1,10 +1,10 @@
 package net.smc.core.comm;
 
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.function.LongSupplier;
 import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
 
@@ -40,6 +40,10 @@ public final class MessageSender {
     private static final Logger log = LoggerFactory.getLogger(MessageSender.class);
     /** The least reordering window of {@link #suspectLost}, ms. */
     static final long MIN_REORDER_MILLIS = 2;
+    /** A tail probe waits this many of the peer's smoothed round trips ({@link #armProbe}). */
+    static final double PROBE_ROUND_TRIPS = 2.0;
+    /** ... and at least this long, ms. */
+    static final long MIN_PROBE_MILLIS = 4;
 
     private final String self;
     private final Clock clock;
@@ -55,6 +59,11 @@ public final class MessageSender {
     /** Messages lost before their timeout, told by the Acks of later ones; null when the timeout is fixed. */
     private final LossDetector losses;
     private final RetryTimer timer;
+    /**
+     * Per peer, the critical message transmitted to it last, while it is outstanding: the one a tail
+     * probe would send again ({@link #armProbe}). Empty when the timeout is fixed.
+     */
+    private final Map<Address, Pending> lastTransmitted = new HashMap<>();
     private final DuplicateWindow window;
     private final SenderCounters counters = new SenderCounters();
     private final Scheduler scheduler;
@@ -129,11 +138,16 @@ public final class MessageSender {
         pending.remove(p.id);
         p.settled = true;
         counters.acked++;
-        if (rtt != null && p.tries == 1) { // Karn's rule: the Ack of a retransmitted message may answer any copy
+        if (rtt != null && p.tries == 1 && !p.probed) { // Karn's rule: the Ack of a message sent again may answer any copy
             rtt.sample(p.to, Math.max(0, clock.nowMillis() - p.firstDepartureMillis));
             losses.acked(p, this::suspectLost);
+        } else if (losses != null && p.probed) {
+            losses.ackedAgain(p, this::suspectLost);
         } else if (losses != null) {
             losses.settled(p);
+        }
+        if (rtt != null && !lastTransmitted.remove(p.to, p)) {
+            probeAfterAck(p.to);
         }
         try {
             p.listener.delivered(p.id);
@@ -233,6 +247,7 @@ public final class MessageSender {
         }
         stopped = true;
         timer.stop();
+        lastTransmitted.clear();
         if (losses != null) {
             losses.clear();
         }
@@ -318,16 +333,78 @@ public final class MessageSender {
             p.deadlineMillis = now + backoff.timeoutMillis(p.tries);
         } else {
             long queued = backlog.getAsLong();
+            p.departureMillis = now + queued;
             if (p.tries == 1) {
-                p.firstDepartureMillis = now + queued;
+                p.firstDepartureMillis = p.departureMillis;
             }
             long deadline = now + backoff.timeoutMillis(p.tries, p.firstTimeoutMillis, queued);
             if (p.tries == settings.maxTries()) {
                 deadline = Math.max(deadline, backoff.giveUpMillis(p.firstSentMillis));
             }
             p.deadlineMillis = deadline;
+            armProbe(p, now, queued);
         }
         timer.watch(p);
+    }
+
+    /**
+     * The tail probe (the idea of RFC 8985's tail loss probe, on messages): {@code p} was just
+     * transmitted to its peer, so it is the last message of the flight to that peer. If a later one
+     * follows, the loss detector finds a loss of {@code p} from that one's Ack; if none does, a lost
+     * {@code p} would wait for its timeout (at least 50 ms, more while the peer was never measured,
+     * backing off after a retransmission). So unless {@code p} is acknowledged, or another message
+     * goes to the peer, within twice the peer's smoothed round trip from when the copy leaves the
+     * transport, {@code p} is sent again then, once. The probe is an extra copy: the message's tries,
+     * timeout and give-up time stand (a probe into a link that is down costs one datagram, not a
+     * backed-off try), its Ack is no round-trip sample (it may answer either copy), and the Ack both
+     * settles {@code p} and lets the loss detector find the messages lost before it. Not armed when
+     * the timeout comes first; for a peer not measured yet, armed by its first Ack ({@link #probeAfterAck}).
+     */
+    private void armProbe(Pending p, long now, long queued) {
+        lastTransmitted.put(p.to, p);
+        p.probeAtMillis = 0;
+        double srtt = rtt.smoothedRttMillis(p.to);
+        if (!Double.isNaN(srtt)) {
+            scheduleProbe(p, now, now + queued + probeWaitMillis(srtt));
+        }
+    }
+
+    /**
+     * An Ack came from {@code peer}: the message last transmitted to it, if still outstanding, is probed
+     * two round trips after its copy left the transport (or from now, if it has), if that is sooner
+     * than its probe was due (the peer may have been measured only now).
+     */
+    private void probeAfterAck(Address peer) {
+        Pending last = lastTransmitted.get(peer);
+        double srtt = rtt.smoothedRttMillis(peer);
+        if (last != null && !last.settled && !Double.isNaN(srtt)) {
+            long now = clock.nowMillis();
+            scheduleProbe(last, now, Math.max(now, last.departureMillis) + probeWaitMillis(srtt));
+        }
+    }
+
+    private static long probeWaitMillis(double srtt) {
+        return Math.max(MIN_PROBE_MILLIS, (long) Math.ceil(PROBE_ROUND_TRIPS * srtt));
+    }
+
+    private void scheduleProbe(Pending p, long now, long at) {
+        if (p.probed || at >= p.deadlineMillis || (p.probeAtMillis != 0 && p.probeAtMillis <= at)) {
+            return;
+        }
+        p.probeAtMillis = at;
+        int tries = p.tries;
+        scheduler.schedule(at - now, () -> {
+            if (stopped || p.settled || p.tries != tries || p.probeAtMillis != at || lastTransmitted.get(p.to) != p) {
+                return;
+            }
+            p.probed = true;
+            counters.probes++;
+            try {
+                wire.send(p.to, p.datagrams);
+            } catch (RuntimeException e) {
+                log.debug("'{}': tail probe of {} refused by the transport; its timeout stands", self, p, e);
+            }
+        });
     }
 
     /**
@@ -377,6 +454,7 @@ public final class MessageSender {
 
     private void fail(Pending p, FailureReason reason) {
         p.settled = true;
+        lastTransmitted.remove(p.to, p);
         if (losses != null) {
             losses.settled(p);
         }

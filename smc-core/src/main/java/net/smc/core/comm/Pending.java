@@ -21,6 +21,8 @@ final class Pending {
     final long firstTimeoutMillis;
     /** When the first copy left the transport ({@code Transport.backlogMillis}): round trips are measured from it. */
     long firstDepartureMillis;
+    /** When the latest copy leaves the transport. */
+    long departureMillis;
     /** Transmissions so far, the first included. */
     int tries;
     /** When the current try times out. */
@@ -29,6 +31,10 @@ final class Pending {
     boolean settled;
     /** Taken for lost by the {@link LossDetector} (a message sent after it was acknowledged first). */
     boolean suspected;
+    /** Sent again as its peer's tail probe ({@code MessageSender}): its Ack lets the loss detector look behind it. */
+    boolean probed;
+    /** When its tail probe is due for the current try; 0 when none is ({@code MessageSender}). */
+    long probeAtMillis;
 
     Pending(long id, Address to, MessageType type, List<byte[]> datagrams, DeliveryListener listener,
             long firstSentMillis, long firstTimeoutMillis) {

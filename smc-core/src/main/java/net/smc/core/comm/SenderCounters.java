@@ -11,6 +11,7 @@ public final class SenderCounters {
     long acked;
     long retransmitted;
     long fastRetransmitted;
+    long probes;
     long failed;
     long unknownAcks;
     long misdirectedAcks;
@@ -43,6 +44,14 @@ public final class SenderCounters {
      */
     public long fastRetransmitted() {
         return fastRetransmitted;
+    }
+
+    /**
+     * Of the retransmissions, tail probes: the last message sent to a peer, sent again (an extra copy,
+     * not a try) when neither its Ack nor another message to the peer came within two round trips.
+     */
+    public long probes() {
+        return probes;
     }
 
     /** Critical messages given up on (reported to their listener as failed). */

@@ -58,8 +58,9 @@ class AdaptiveTimeoutTest {
         MessageSender s = a.manager.sender();
         deliverOne(net, a, b); // estimate 30 ms
         net.network.partition(Set.of(a.address()), Set.of(b.address()));
-        net.scheduler.schedule(15, net.network::heal);
+        net.scheduler.schedule(25, net.network::heal); // the tail probe at 20 ms is lost too
         assertEquals(30 + 10, deliverOne(net, a, b), "retransmitted at the 30 ms estimate, not the 200 ms initial timeout");
+        assertEquals(1, s.counters().probes());
         assertEquals(1, s.counters().retransmitted());
         assertEquals(10.0, s.rtt().smoothedRttMillis(b.address()), 1e-9,
                 "Karn's rule: the 40 ms from the first copy to the Ack of the second is no sample");
@@ -75,7 +76,7 @@ class AdaptiveTimeoutTest {
         s.roundTrip(b.address(), 10); // as a discovery reply gives it, before anything critical went to b
         assertEquals(30, s.firstTimeoutMillis(b.address()));
         net.network.partition(Set.of(a.address()), Set.of(b.address()));
-        net.scheduler.schedule(15, net.network::heal);
+        net.scheduler.schedule(25, net.network::heal); // the tail probe at 20 ms is lost too
         assertEquals(30 + 10, deliverOne(net, a, b), "a first contact whose first copy is lost: repaired after 30 ms");
     }
 

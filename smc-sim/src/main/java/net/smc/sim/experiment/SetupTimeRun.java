@@ -94,23 +94,25 @@ public final class SetupTimeRun {
     }
 
     /**
-     * A line on the team's critical messages: sent, retransmitted, and copies their receivers already
+     * A line on the team's critical messages: sent, retransmitted, tail probes, and copies their receivers already
      * had (a retransmission whose first copy arrived: its Ack was lost, or it went too soon).
      */
     static String retransmissions(TeamSimulation sim) {
         long sent = 0;
         long retransmitted = 0;
         long fast = 0;
+        long probes = 0;
         long duplicates = 0;
         for (net.smc.core.cell.Cell c : sim.cells()) {
             net.smc.core.comm.SenderCounters k = c.communication().sender().counters();
             sent += k.sent();
             retransmitted += k.retransmitted();
             fast += k.fastRetransmitted();
+            probes += k.probes();
             duplicates += k.duplicates();
         }
         return "team's critical messages: " + sent + " sent, " + retransmitted + " retransmitted (" + fast
-                + " before their timeout), " + duplicates
+                + " before their timeout), " + probes + " tail probes, " + duplicates
                 + " copies received again\n";
     }
 
