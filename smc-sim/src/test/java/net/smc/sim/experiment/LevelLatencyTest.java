@@ -172,7 +172,8 @@ class LevelLatencyTest {
     }
 
     /**
-     * A manager whose seat was refused, with none of the vehicles that answered it still free,
+     * A manager whose seat was refused (or opened again on the vehicle's withdrawal, which announces
+     * the refusal), with none of the vehicles that answered it still free,
      * discovers again at once unless it discovered again within the last quarter heartbeat period
      * (the rediscovery rate limit: 125 ms). A rediscovery asked for while its only open seat was
      * being given to another vehicle sends nothing and does not count against that limit; when it
@@ -198,7 +199,8 @@ class LevelLatencyTest {
             sim.start();
             assertTrue(sim.runUntil(() -> started(events).size() == 49, 20_000), () -> String.join("\n", sim.trace()));
             for (CellEvent failed : events) {
-                if (failed.kind() != CellEvent.Kind.ASSIGNMENT_FAILED || !failed.detail().contains("refused")) {
+                if (failed.kind() != CellEvent.Kind.ASSIGNMENT_FAILED
+                        || !(failed.detail().contains("refused") || failed.detail().contains("withdrew its answer"))) {
                     continue;
                 }
                 long at = failed.timeMillis();
