@@ -133,7 +133,7 @@ final class Recruiter {
         if (w.mission().equals(ctx.missionId()) && st.discoveries.answersOurs(w.inReplyTo())) {
             st.forgetAnswer(env.sender());
             st.earlyReplies.remove(env.sender());
-            pendingFor(env.sender()).ifPresent(seat -> answers.assignmentFailed(env.sender(), seat,
+            st.seatGivenTo(env.sender()).ifPresent(seat -> answers.assignmentFailed(env.sender(), seat,
                     "withdrew its answer: it is taking a role from another manager"));
         }
     }
@@ -147,14 +147,9 @@ final class Recruiter {
      * costs one check and changes nothing.
      */
     void onUnverifiedWithdrawal(String claimed, Address from, Withdrawal w) {
-        if (w.mission().equals(ctx.missionId()) && st.discoveries.answersOurs(w.inReplyTo()) && pendingFor(claimed).isPresent()) {
+        if (w.mission().equals(ctx.missionId()) && st.discoveries.answersOurs(w.inReplyTo()) && st.seatGivenTo(claimed).isPresent()) {
             ctx.host().checkHeld(from);
         }
-    }
-
-    /** The seat this manager is giving {@code vehicle} now (an assignment sent, no answer yet), if any. */
-    private Optional<Seat> pendingFor(String vehicle) {
-        return st.owned.entrySet().stream().filter(e -> vehicle.equals(e.getValue().pendingFor)).map(Map.Entry::getKey).findFirst();
     }
 
     /** A discovery reply the transport holds unchecked ({@link ReplyBatches#addUnchecked}). */
@@ -227,7 +222,7 @@ final class Recruiter {
             st.refused.put(uav, st.refusal(summary, credential, ctx.clock().nowMillis()));
             return;
         }
-        if (st.owned.values().stream().anyMatch(o -> uav.equals(o.pendingFor))) {
+        if (st.seatGivenTo(uav).isPresent()) {
             return; // already being given a seat
         }
         giveSeat(uav, summary, seat.get());
@@ -321,7 +316,7 @@ final class Recruiter {
             }
             return;
         }
-        if (st.owned.values().stream().anyMatch(o -> env.sender().equals(o.pendingFor))) {
+        if (st.seatGivenTo(env.sender()).isPresent()) {
             return; // already being given a seat
         }
         giveSeat(env.sender(), full.summary(), seat.get());

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.function.LongSupplier;
@@ -281,6 +282,11 @@ final class TeamState {
         }
         List<Seat> held = holder.equals(ctx.self()) ? seats : children.containsKey(holder) ? children.get(holder).seats : List.of();
         return held.stream().anyMatch(s -> !ctx.slots().role(s.role()).isSecondary());
+    }
+
+    /** The seat being given to {@code vehicle} now (an assignment sent, no answer yet), if any. */
+    Optional<Seat> seatGivenTo(String vehicle) {
+        return owned.entrySet().stream().filter(e -> vehicle.equals(e.getValue().pendingFor)).map(Map.Entry::getKey).findFirst();
     }
 
     /** Whether a seat could go to a newly found vehicle: vacant, or only hosted, and nobody is being given it. */

@@ -260,11 +260,11 @@ public final class SetupTimeRun {
             for (int i = last.size() - 1; i >= 0; i--) {
                 Map.Entry<String, Long> en = last.get(i);
                 long[] t = tries.get(en.getKey());
-                String manager = managerOf.get(en.getKey());
-                Long parent = vehicleStarted.get(manager);
                 if (t == null) {
                     continue;
                 }
+                String manager = managerOf.get(en.getKey());
+                Long parent = vehicleStarted.get(manager);
                 s.append(String.format(Locale.ROOT, "  %s started at %d: its manager %s at %d, first assignment at %d, "
                         + "last at %d (%d sent)\n", en.getKey(), en.getValue() - start, manager,
                         (parent == null ? start : parent) - start, t[0] - start, t[1] - start, t[2]));
