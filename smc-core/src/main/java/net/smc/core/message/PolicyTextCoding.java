@@ -1,5 +1,6 @@
 package net.smc.core.message;
 
+import java.util.Locale;
 import java.util.zip.DataFormatException;
 import java.util.zip.Deflater;
 import java.util.zip.Inflater;
@@ -9,17 +10,22 @@ import net.smc.core.wire.ByteWriter;
 /**
  * The wire form of a policy text ({@link PolicyReply#text()}): its length in UTF-8 bytes, a coding
  * byte, and either the text itself ({@link WireFormat#POLICY_TEXT_PLAIN}) or a zlib stream of it
- * (RFC 1950: DEFLATE behind a 2-byte header, with an Adler-32 checksum of the text;
- * {@link WireFormat#POLICY_TEXT_DEFLATE}) behind its own two-byte length. The
- * encoder deflates a text of {@link WireFormat#MIN_DEFLATED_POLICY_TEXT} bytes or more and keeps
- * the deflated form when it is shorter on the wire than the text. Policy files are small, repetitive PonderTalk and shrink
- * to about two fifths; everything above the codec sees the text only.
+ * (RFC 1950: DEFLATE behind a 2-byte header, with an Adler-32 checksum of the text) behind its own
+ * two-byte length: deflated over the preset dictionary of PonderTalk phrases
+ * ({@link WireFormat#POLICY_TEXT_DEFLATE_DICTIONARY}, {@link PolicyDictionary}), or without one
+ * ({@link WireFormat#POLICY_TEXT_DEFLATE}). The encoder deflates a text of
+ * {@link WireFormat#MIN_DEFLATED_POLICY_TEXT} bytes or more over the dictionary and keeps the
+ * deflated form when it is shorter on the wire than the text. Policy files are small, repetitive
+ * PonderTalk: a generated role's files shrink to about a sixth of their text over the dictionary
+ * (two fifths without it), the reconnaissance mission's to about three tenths; everything above
+ * the codec sees the text only.
  *
  * <p>Inflation is bounded: the declared length is checked against
  * {@link WireFormat#MAX_POLICY_TEXT} before anything is allocated, the stream is inflated into an
  * array of exactly that length (a stream that would give more is refused without producing it),
  * and it must end exactly there, using every byte it came with, its checksum right: a corrupted
- * stream is refused rather than read as another text.
+ * stream is refused rather than read as another text. A stream of coding 2 must name the
+ * dictionary (its DICTID), one of coding 1 must name none.
  *
  * <p>A text has more than one valid wire form (plain, or any DEFLATE stream of it); the decoder
  * accepts any, and the encoder always writes the same one for the same text.
@@ -48,7 +54,7 @@ final class PolicyTextCoding {
             byte[] deflated = new byte[n - 2]; // shorter on the wire than the text, its own length included
             int m = deflate(utf8, deflated);
             if (m >= 0) {
-                w.u8(WireFormat.POLICY_TEXT_DEFLATE);
+                w.u8(WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY);
                 w.u16(m);
                 w.bytes(deflated, 0, m);
                 return;
@@ -58,10 +64,11 @@ final class PolicyTextCoding {
         w.bytes(utf8);
     }
 
-    /** Deflates {@code in} into {@code out}; the stream's length, or -1 if it does not fit in {@code out}. */
+    /** Deflates {@code in} over the dictionary into {@code out}; the stream's length, or -1 if it does not fit in {@code out}. */
     private static int deflate(byte[] in, byte[] out) {
         Deflater d = DEFLATERS.get();
         d.reset();
+        d.setDictionary(PolicyDictionary.BYTES);
         d.setInput(in);
         d.finish();
         int m = d.deflate(out, 0, out.length);
@@ -79,26 +86,47 @@ final class PolicyTextCoding {
         if (coding == WireFormat.POLICY_TEXT_PLAIN) {
             return text(r.array(), r.take(n, field), n, field);
         }
-        if (coding != WireFormat.POLICY_TEXT_DEFLATE) {
+        if (coding != WireFormat.POLICY_TEXT_DEFLATE && coding != WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY) {
             throw new DecodeException(RejectReason.MALFORMED, "the coding of " + field + " is " + coding
-                    + "; it is " + WireFormat.POLICY_TEXT_PLAIN + " (plain) or " + WireFormat.POLICY_TEXT_DEFLATE
-                    + " (DEFLATE)");
+                    + "; it is " + WireFormat.POLICY_TEXT_PLAIN + " (plain), " + WireFormat.POLICY_TEXT_DEFLATE
+                    + " (DEFLATE) or " + WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY + " (DEFLATE over the dictionary)");
         }
         int m = r.length16("the deflated " + field);
         int at = r.take(m, "the deflated " + field);
         byte[] utf8 = new byte[n];
-        inflate(r.array(), at, m, utf8, field);
+        inflate(r.array(), at, m, utf8, coding == WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY, field);
         return text(utf8, 0, n, field);
     }
 
-    /** Inflates exactly {@code out.length} bytes from {@code in[at, at+m)}: the stream must end there and use all of its bytes. */
-    private static void inflate(byte[] in, int at, int m, byte[] out, String field) throws DecodeException {
+    /**
+     * Inflates exactly {@code out.length} bytes from {@code in[at, at+m)}: the stream must end there
+     * and use all of its bytes, and name the dictionary if {@code dictionary}, else none.
+     */
+    private static void inflate(byte[] in, int at, int m, byte[] out, boolean dictionary, String field)
+            throws DecodeException {
         Inflater inf = INFLATERS.get();
         inf.reset();
         inf.setInput(in, at, m);
         int got;
         try {
             got = inf.inflate(out);
+            if (got == 0 && inf.needsDictionary()) {
+                if (!dictionary) {
+                    throw new DecodeException(RejectReason.MALFORMED, field + " is a DEFLATE stream that needs a"
+                            + " preset dictionary; its coding (" + WireFormat.POLICY_TEXT_DEFLATE + ") uses none");
+                }
+                if (inf.getAdler() != (PolicyDictionary.ID & 0xFFFF_FFFFL)) {
+                    throw new DecodeException(RejectReason.MALFORMED, String.format(Locale.ROOT,
+                            "%s is a DEFLATE stream over the dictionary %08x; this format's is %08x", field,
+                            inf.getAdler(), PolicyDictionary.ID));
+                }
+                inf.setDictionary(PolicyDictionary.BYTES);
+                got = inf.inflate(out);
+            } else if (dictionary && (got > 0 || inf.finished())) {
+                throw new DecodeException(RejectReason.MALFORMED, field + " is a DEFLATE stream that names no"
+                        + " preset dictionary; its coding (" + WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY
+                        + ") uses the dictionary of PonderTalk phrases");
+            }
             if (got == out.length && !inf.finished() && inf.inflate(new byte[1]) > 0) {
                 throw new DecodeException(RejectReason.OVERSIZED, field + " inflates to more than the "
                         + out.length + " bytes it declares");
@@ -106,10 +134,6 @@ final class PolicyTextCoding {
         } catch (DataFormatException e) {
             throw new DecodeException(RejectReason.MALFORMED, field + " is not a valid DEFLATE stream ("
                     + e.getMessage() + ")");
-        }
-        if (inf.needsDictionary()) {
-            throw new DecodeException(RejectReason.MALFORMED, field + " is a DEFLATE stream that needs a preset"
-                    + " dictionary; none is used");
         }
         if (!inf.finished()) {
             throw new DecodeException(RejectReason.TRUNCATED, "the DEFLATE stream of " + field + " ends after "

@@ -45,6 +45,11 @@ public final class WireFormat {
     /** The coding byte of a policy text sent as a zlib stream (RFC 1950: DEFLATE with an Adler-32 checksum, no preset dictionary). */
     public static final int POLICY_TEXT_DEFLATE = 1;
     /**
+     * The coding byte of a policy text sent as a zlib stream deflated over the preset dictionary of
+     * PonderTalk phrases (the stream names it by its Adler-32): what the encoder writes.
+     */
+    public static final int POLICY_TEXT_DEFLATE_DICTIONARY = 2;
+    /**
      * The shortest policy text the encoder deflates (UTF-8 bytes); it sends the deflated form when
      * it is shorter than the text, else the text.
      */

@@ -277,7 +277,7 @@ public final class CpuCharge implements CpuModel {
         }
         int version = (data[textAt - 4] & 0xFF) << 24 | (data[textAt - 3] & 0xFF) << 16 | u16(data, textAt - 2);
         return new PolicyText(new String(data, uriAt + 1, n, StandardCharsets.UTF_8), version, u16(data, textAt),
-                (data[textAt + 2] & 0xFF) == WireFormat.POLICY_TEXT_DEFLATE);
+                (data[textAt + 2] & 0xFF) != WireFormat.POLICY_TEXT_PLAIN);
     }
 
     private static int u16(byte[] b, int at) {
