@@ -4,10 +4,15 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.zip.Adler32;
 import java.util.zip.Deflater;
 
 import org.junit.jupiter.api.Test;
+
+import net.smc.core.wire.ByteWriter;
 
 /** A policy reply's text on the wire: deflated over the dictionary when that is shorter, and inflated with bounds. */
 class PolicyTextCodingTest {
@@ -40,7 +45,11 @@ class PolicyTextCodingTest {
     }
 
     private static byte[] zlib(byte[] in, byte[] dictionary) {
-        Deflater d = new Deflater(9);
+        return zlib(in, dictionary, 9);
+    }
+
+    private static byte[] zlib(byte[] in, byte[] dictionary, int level) {
+        Deflater d = new Deflater(level);
         if (dictionary != null) {
             d.setDictionary(dictionary);
         }
@@ -135,40 +144,25 @@ class PolicyTextCodingTest {
      */
     @Test
     void theProjectsPolicyFiles_takeFewerBytesOverTheDictionary() throws Exception {
-        java.nio.file.Path policies = java.nio.file.Path.of(System.getProperty("smc.repo.dir", "../policies"));
+        Path policies = Path.of(System.getProperty("smc.repo.dir", "../policies"));
         long plain = 0;
         long alone = 0;
         long over = 0;
         int files = 0;
-        try (var walk = java.nio.file.Files.walk(policies)) {
-            for (java.nio.file.Path f : walk.filter(x -> x.toString().endsWith(".p2")).toList()) {
-                byte[] text = java.nio.file.Files.readAllBytes(f);
-                net.smc.core.wire.ByteWriter w = net.smc.core.wire.ByteWriter.growing(1_024, 1 << 20, IllegalStateException::new);
+        try (var walk = Files.walk(policies)) {
+            for (Path f : walk.filter(x -> x.toString().endsWith(".p2")).toList()) {
+                byte[] text = Files.readAllBytes(f);
+                ByteWriter w = ByteWriter.growing(1_024, 1 << 20, IllegalStateException::new);
                 PolicyTextCoding.write(new String(text, StandardCharsets.UTF_8), w);
                 assertEquals(WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY, w.array()[2], f.toString());
                 plain += text.length;
-                alone += zlibAt6(text, null).length;
+                alone += zlib(text, null, 6).length;
                 over += w.position() - 5;
                 files++;
             }
         }
         assertTrue(files >= 20, files + " policy files under " + policies.toAbsolutePath());
-        long alone0 = alone;
-        long plain0 = plain;
-        assertTrue(over < alone * 85 / 100, over + " bytes over the dictionary, " + alone0 + " without, " + plain0 + " of text");
-    }
-
-    private static byte[] zlibAt6(byte[] in, byte[] dictionary) {
-        Deflater d = new Deflater(6);
-        if (dictionary != null) {
-            d.setDictionary(dictionary);
-        }
-        d.setInput(in);
-        d.finish();
-        byte[] out = new byte[in.length + 64];
-        int n = d.deflate(out);
-        d.end();
-        return Arrays.copyOf(out, n);
+        assertTrue(over < alone * 85 / 100, over + " bytes over the dictionary, " + alone + " without, " + plain + " of text");
     }
 
     @Test
@@ -226,7 +220,7 @@ class PolicyTextCodingTest {
                 .raw(withDictionary).datagram(), RejectReason.MALFORMED, "POLICY_REPLY from 'uav1' (id 7): text is a"
                 + " DEFLATE stream that needs a preset dictionary; its coding (1) uses none");
         byte[] otherDictionary = zlib(text, "root/factory/".getBytes(StandardCharsets.UTF_8));
-        java.util.zip.Adler32 other = new java.util.zip.Adler32();
+        Adler32 other = new Adler32();
         other.update("root/factory/".getBytes(StandardCharsets.UTF_8));
         reject(reply().u16(text.length).u8(WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY).u16(otherDictionary.length)
                 .raw(otherDictionary).datagram(), RejectReason.MALFORMED, String.format("POLICY_REPLY from 'uav1'"
