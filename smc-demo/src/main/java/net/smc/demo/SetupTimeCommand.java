@@ -44,8 +44,9 @@ import picocli.CommandLine.Spec;
  * generated ({@link MissionGenerator}), and each scheme's team is set up {@code --runs} times on the
  * simulated radio network ({@link SetupTimeRun}), and with {@code --transport udp} on loopback UDP
  * ({@link UdpSetupTimeRun}), seeds {@code --seed + run}. Writes
- * {@code setup-time.csv}, {@code setup-time.png} and the CPU costs used ({@code costs.properties}) in
- * {@code --out}; shows a progress bar on standard error and a summary on standard output.
+ * {@code setup-time.csv}, {@code setup-time.png}, the shape of the medians ({@code shape.txt}:
+ * {@link SetupTimeShape}) and the CPU costs used ({@code costs.properties}) in {@code --out}; shows a
+ * progress bar on standard error, and each point's summary and then the shape on standard output.
  */
 @Command(name = "setup-time", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = {"Measures the mission set-up time against the number of roles (the paper's Fig. 8), for the "
@@ -53,7 +54,9 @@ import picocli.CommandLine.Spec;
                 + "charged from costs measured on this machine (or read with --costs); with --transport udp (or sim,udp) "
                 + "the same teams on real Netty UDP over loopback, timed on the wall clock.",
             "Writes DIR/setup-time.csv (one row per run), DIR/setup-time.png (median and p10-p90 band per scheme "
-                    + "and transport) and DIR/costs.properties."},
+                    + "and transport), DIR/shape.txt (the medians, each scheme's growth from its fewest roles, "
+                    + "centralised over distributed, and where the faster scheme changes; also printed at the end) "
+                    + "and DIR/costs.properties."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {"0:every run finished (a run whose roles did not all start is a row with an empty setup_ms)",
             "2:usage error"})
@@ -245,7 +248,11 @@ final class SetupTimeCommand implements Callable<Integer> {
         io.stderr().println();
         io.stderr().flush();
         SetupTimeChart.write(results, dir.resolve("setup-time.png"));
-        io.stdout().println("wrote " + dir.resolve("setup-time.csv") + " and " + dir.resolve("setup-time.png"));
+        String shape = SetupTimeShape.describe(results);
+        Files.writeString(dir.resolve("shape.txt"), shape);
+        io.stdout().print(shape);
+        io.stdout().println("wrote " + dir.resolve("setup-time.csv") + ", " + dir.resolve("setup-time.png") + " and "
+                + dir.resolve("shape.txt"));
         io.stdout().flush();
         return 0;
     }

@@ -46,6 +46,9 @@ class SetupTimeCommandTest {
         assertTrue(Files.size(dir.resolve("out/setup-time.png")) > 1_000);
         assertTrue(Files.isRegularFile(dir.resolve("out/costs.properties")));
         assertTrue(r.err().contains("8/8 runs"), r.err());
+        String shape = Files.readString(dir.resolve("out/shape.txt"));
+        assertTrue(shape.startsWith("shape of the medians (sim):\n") && shape.contains("centralised / distributed"), shape);
+        assertTrue(r.out().contains(shape), "the shape is printed too: " + r.out());
     }
 
     @Test

@@ -5,6 +5,7 @@ import java.security.KeyPair;
 import java.security.KeyPairGenerator;
 import java.security.SecureRandom;
 import java.security.Signature;
+import java.util.Random;
 import java.util.concurrent.TimeUnit;
 
 import org.openjdk.jmh.annotations.Benchmark;
@@ -22,6 +23,13 @@ import org.openjdk.jmh.annotations.Warmup;
  * One Ed25519 signature and one verification of a 200-byte message (a discovery datagram's size):
  * {@link SigningKey} and {@link VerificationKey} against the JDK 17's own provider, the baseline,
  * in the same run. Signed datagrams (discovery, first contact, credentials) cost a cell this much.
+ *
+ * <p>{@link VerificationKey#verify} remembers the signatures it found valid lately
+ * ({@link VerifiedSignatures}, so that one broadcast costs a simulated team one verification), so
+ * {@code verify} goes round more signed messages than the memo holds, each seen again only after
+ * the memo has dropped it: every call is a verification, with the memo's look-up and entry as a cell
+ * pays them for a new signature. {@code verifyRemembered} checks one signature over and over: the
+ * memo's hit, what every receiver after the first pays for the same broadcast.
  */
 @State(Scope.Thread)
 @Fork(1)
@@ -35,6 +43,10 @@ public class SignatureBench {
     private byte[] signature;
     private KeyPair jdkPair;
     private byte[] jdkSignature;
+    /** More signed messages than the memo of valid signatures holds, and their signatures. */
+    private final byte[][] messages = new byte[2 * VerifiedSignatures.CAPACITY + 1][];
+    private final byte[][] signatures = new byte[messages.length][];
+    private int next;
 
     @Setup
     public void setUp() throws GeneralSecurityException {
@@ -46,6 +58,12 @@ public class SignatureBench {
         if (!key.verificationKey().verify(message, signature) || !jdkVerify()) {
             throw new IllegalStateException("a signature made in set-up does not verify");
         }
+        Random random = new Random(5);
+        for (int i = 0; i < messages.length; i++) {
+            messages[i] = new byte[message.length];
+            random.nextBytes(messages[i]);
+            signatures[i] = key.sign(messages[i]);
+        }
     }
 
     @Benchmark
@@ -53,8 +71,17 @@ public class SignatureBench {
         return key.sign(message);
     }
 
+    /** A signature the memo does not hold: an Ed25519 verification. */
     @Benchmark
     public boolean verify() {
+        int i = next;
+        next = i + 1 == messages.length ? 0 : i + 1;
+        return key.verificationKey().verify(messages[i], signatures[i]);
+    }
+
+    /** The same signature again: the memo's answer. */
+    @Benchmark
+    public boolean verifyRemembered() {
         return key.verificationKey().verify(message, signature);
     }
 
