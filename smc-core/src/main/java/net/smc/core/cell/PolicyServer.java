@@ -100,6 +100,9 @@ final class PolicyServer {
 
     /** Drops the requests and files to send that waited longer than the failure timeout. */
     void expire(long now) {
+        if (st.parkedPolicyRequests.isEmpty()) {
+            return; // the usual case once a team has formed (see Recruiter.expire)
+        }
         st.parkedPolicyRequests.values().removeIf(parked -> {
             parked.removeIf(p -> now - p.atMillis() > ctx.timing().failureTimeoutMillis());
             return parked.isEmpty();

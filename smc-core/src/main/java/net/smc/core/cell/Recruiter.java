@@ -438,11 +438,24 @@ final class Recruiter {
 
     /** Drops stale requests and reservations, and reports each reservation that expired. */
     void expire(long now) {
-        st.abandoned.values().removeIf(until -> now >= until);
-        st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
-        st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
-        st.unchecked.values().removeIf(u -> now - u.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
-        st.refused.values().removeIf(r -> now - r.atMillis() >= ctx.timing().refusalMillis());
+        // Every cell ticks twice a second and these are mostly empty once a team has formed; an empty
+        // map is passed over without the iterator and predicate a removeIf allocates (and without
+        // walking the table a map keeps at the size it grew to while the team formed).
+        if (!st.abandoned.isEmpty()) {
+            st.abandoned.values().removeIf(until -> now >= until);
+        }
+        if (!st.capabilityRequests.isEmpty()) {
+            st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
+        }
+        if (!st.heard.isEmpty()) {
+            st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        }
+        if (!st.unchecked.isEmpty()) {
+            st.unchecked.values().removeIf(u -> now - u.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        }
+        if (!st.refused.isEmpty()) {
+            st.refused.values().removeIf(r -> now - r.atMillis() >= ctx.timing().refusalMillis());
+        }
         policies.expire(now);
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();

@@ -18,12 +18,58 @@ final class ValueLimits {
 
     /** An immutable deep copy of a list of values. */
     static List<Object> list(String field, List<?> values) {
-        return list(field, values, 0);
+        if (values != null && fits(values, 0)) {
+            return copy(values);
+        }
+        return list(field, values, 0); // throws, naming the field and element that broke a rule
     }
 
     /** A checked value (lists copied deeply). */
     static Object value(String field, Object value) {
+        // A list given as a value is one level down already, as value(String, Object, int) counts.
+        if (value instanceof List<?> l ? 1 <= WireFormat.MAX_VALUE_DEPTH && fits(l, 1) : fitsScalar(value)) {
+            return value instanceof List<?> l ? copy(l) : value;
+        }
         return value(field, value, 0);
+    }
+
+    // The checks without names: most messages (every subtree report, twice a second per cell) carry
+    // values that fit, and naming each element for a message that is never shown cost a string each.
+    // The named checks below run only when these fail, and throw.
+
+    /** Whether {@code values} (at {@code depth}) and everything in it fit the rules. */
+    private static boolean fits(List<?> values, int depth) {
+        if (values.size() > WireFormat.MAX_VALUES) {
+            return false;
+        }
+        for (int i = 0; i < values.size(); i++) {
+            Object v = values.get(i);
+            if (v instanceof List<?> l ? depth + 1 > WireFormat.MAX_VALUE_DEPTH || !fits(l, depth + 1) : !fitsScalar(v)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean fitsScalar(Object v) {
+        if (v == null || v instanceof Boolean) {
+            return true;
+        }
+        if (v instanceof String s) {
+            int bytes = Utf8.length(s);
+            return bytes >= 0 && bytes <= WireFormat.MAX_VALUE_STRING;
+        }
+        return v instanceof BigDecimal d && d.unscaledValue().bitLength() / 8 + 1 <= WireFormat.MAX_NUMBER_BYTES;
+    }
+
+    /** An unmodifiable deep copy of values that {@link #fits}. */
+    private static List<Object> copy(List<?> values) {
+        List<Object> copy = new ArrayList<>(values.size());
+        for (int i = 0; i < values.size(); i++) {
+            Object v = values.get(i);
+            copy.add(v instanceof List<?> l ? copy(l) : v);
+        }
+        return Collections.unmodifiableList(copy);
     }
 
     private static List<Object> list(String field, List<?> values, int depth) {

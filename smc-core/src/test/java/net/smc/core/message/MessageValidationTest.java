@@ -2,6 +2,7 @@ package net.smc.core.message;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
@@ -118,6 +119,36 @@ class MessageValidationTest {
     void values_refuseListsNestedDeeperThanFour() {
         assertEquals("Invocation.args[0][0][0][0][0] is a list nested 5 deep; PonderTalk values nest at most 4 deep",
                 refusal(() -> new Invocation("r", "o", List.of(Samples.nested(5, "x")))));
+    }
+
+    /** Values that fit are let through by a check that names nothing: it must draw every line where the named one does. */
+    @Test
+    @SuppressWarnings("unchecked")
+    void values_nestedToTheLimit_areAcceptedAndCopiedAtEveryLevel_asListsAndAsAValue_oneDeeperIsRefused() {
+        List<Object> limit = Samples.nested(4, "x");
+        Invocation call = new Invocation("r", "o", List.of(limit));
+        InvocationResult result = InvocationResult.ok(1, limit);
+        assertEquals(List.of(limit), call.args());
+        assertEquals(limit, result.value());
+        List<?> innermostOfCall = (List<?>) ((List<?>) ((List<?>) ((List<?>) call.args().get(0)).get(0)).get(0)).get(0);
+        assertEquals(List.of("x"), innermostOfCall);
+        assertThrows(UnsupportedOperationException.class, () -> ((List<Object>) innermostOfCall).add("y"));
+        List<Object> innermost = (List<Object>) ((List<?>) ((List<?>) limit.get(0)).get(0)).get(0);
+        innermost.set(0, "changed");
+        assertEquals("x", ((List<?>) ((List<?>) ((List<?>) ((List<?>) result.value()).get(0)).get(0)).get(0)).get(0),
+                "a deep copy");
+        assertEquals("InvocationResult.value[0][0][0][0] is a list nested 5 deep; PonderTalk values nest at most 4 deep",
+                refusal(() -> InvocationResult.ok(1, Samples.nested(5, "x"))));
+    }
+
+    @Test
+    void values_refuseAStringThatIsNoUnicodeTextOrTooLong_deepInAList() {
+        assertEquals("RoleEvent.values[1][0] '\ud800' holds an unpaired surrogate; it must be valid Unicode text",
+                refusal(() -> new RoleEvent("r", "e", List.of("a", List.of("\ud800")))));
+        String longest = Samples.ascii(WireFormat.MAX_VALUE_STRING);
+        assertEquals(List.of(List.of(longest)), new RoleEvent("r", "e", List.of(List.of(longest))).values());
+        assertTrue(refusal(() -> InvocationResult.ok(1, List.of(List.of(longest + "z")))).startsWith(
+                "InvocationResult.value[0][0] '"), "named down to the element");
     }
 
     @Test
