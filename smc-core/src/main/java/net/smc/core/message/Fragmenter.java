@@ -15,14 +15,13 @@ import net.smc.core.wire.ByteWriter;
  */
 final class Fragmenter {
     private final int datagramLimit;
-    private final byte[] datagram;
-    private final ByteBuffer view;
+    /** The frame being written, and a view of it for sinks: made at the first fragmented message (most cells send none). */
+    private byte[] datagram;
+    private ByteBuffer view;
 
     /** A fragmenter whose frames are at most {@code datagramLimit} bytes long. */
     Fragmenter(int datagramLimit) {
         this.datagramLimit = datagramLimit;
-        this.datagram = new byte[datagramLimit];
-        this.view = ByteBuffer.wrap(datagram).asReadOnlyBuffer();
     }
 
     /** Payload bytes one fragment frame can carry for a sender of {@code senderBytes}. */
@@ -56,6 +55,10 @@ final class Fragmenter {
      */
     int emit(byte[] payload, int off, int total, MessageType type, String sender, int senderBytes, long id,
             DatagramSink sink) {
+        if (datagram == null) {
+            datagram = new byte[datagramLimit];
+            view = ByteBuffer.wrap(datagram).asReadOnlyBuffer();
+        }
         int count = count(total, capacity(senderBytes));
         for (int i = 0; i < count; i++) {
             int len = chunkLength(i, count, total);

@@ -27,8 +27,8 @@ public final class MessageDecoder {
     private final Reassembler reassembler;
     private final DatagramReader reader = new DatagramReader();
     private final Header header = new Header();
-    /** A copy of a datagram that arrived in a buffer without an accessible array. */
-    private final byte[] copy = new byte[WireFormat.MAX_DATAGRAM];
+    /** A copy of a datagram that arrived in a buffer without an accessible array; made when first needed. */
+    private byte[] copy;
     private final long[] rejected = new long[RejectReason.values().length];
     private long decoded;
     private long pending;
@@ -66,8 +66,11 @@ public final class MessageDecoder {
         if (datagram.hasArray()) {
             return decode(datagram.array(), datagram.arrayOffset() + datagram.position(), length);
         }
-        if (length > copy.length) {
+        if (length > WireFormat.MAX_DATAGRAM) {
             return reject(RejectReason.OVERSIZED, tooLarge(length));
+        }
+        if (copy == null) {
+            copy = new byte[WireFormat.MAX_DATAGRAM];
         }
         datagram.get(datagram.position(), copy, 0, length);
         return decode(copy, 0, length);

@@ -10,18 +10,21 @@ import net.smc.core.wire.ByteWriter;
  * into a caller's reusable buffer when it fits one datagram (heartbeats, acks: the hot path, which
  * allocates nothing), or into as many fragment frames as its payload needs.
  *
- * <p>The payload is written first into the encoder's own buffer, behind room for the largest
- * header, and the header is then put in front of it, so that a single datagram is one contiguous
- * copy. An encoder holds that buffer (about 64 KiB) and is not thread-safe: one per cell, used on
- * the cell's thread.
+ * <p>The payload is written first into a scratch buffer, behind room for the largest header, and
+ * the header is then put in front of it, so that a single datagram is one contiguous copy. The
+ * buffer (about 64 KiB, room for the largest payload) belongs to the thread, not to the encoder:
+ * the encoders of a thousand simulated cells on one thread share one, instead of each holding 64
+ * KiB of which a heartbeat touches a hundred bytes. An encode that starts while another on the
+ * same thread still has the buffer (a sink that sends again at once) gets a buffer of its own. An
+ * encoder is not thread-safe (its counters): one per cell, used on the cell's thread.
  */
 public final class MessageEncoder {
     /** Room for the largest header in front of the payload. */
     private static final int HEADROOM = Header.length(WireFormat.MAX_SENDER);
 
-    private final byte[] scratch = new byte[HEADROOM + WireFormat.MAX_PAYLOAD];
-    private final ByteBuffer scratchView = ByteBuffer.wrap(scratch).asReadOnlyBuffer();
-    private final ByteWriter writer = new ByteWriter(scratch, () -> PayloadOverflow.INSTANCE);
+    /** The thread's scratch buffer, shared by every encoder that runs on the thread. */
+    private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
+
     private final int datagramLimit;
     private final Fragmenter fragmenter;
     private long messages;
@@ -59,25 +62,31 @@ public final class MessageEncoder {
      *                                  has too little room
      */
     public int encode(Envelope envelope, ByteBuffer out) {
-        int senderBytes = Utf8.length(envelope.sender());
-        int payload = writePayload(envelope);
-        int headerLength = Header.length(senderBytes);
-        int size = headerLength + payload;
-        if (size > datagramLimit) {
-            throw new IllegalArgumentException(describe(envelope) + ": its payload of " + payload
-                    + " bytes needs fragments (one datagram holds " + (datagramLimit - headerLength)
-                    + " payload bytes for this sender); use encode(envelope, sink)");
+        Scratch scratch = Scratch.acquire();
+        try {
+            int senderBytes = Utf8.length(envelope.sender());
+            int payload = writePayload(scratch, envelope);
+            int headerLength = Header.length(senderBytes);
+            int size = headerLength + payload;
+            if (size > datagramLimit) {
+                throw new IllegalArgumentException(describe(envelope) + ": its payload of " + payload
+                        + " bytes needs fragments (one datagram holds " + (datagramLimit - headerLength)
+                        + " payload bytes for this sender); use encode(envelope, sink)");
+            }
+            if (out.remaining() < size) {
+                throw new IllegalArgumentException(describe(envelope) + ": the buffer has " + out.remaining()
+                        + " bytes left; the datagram needs " + size);
+            }
+            int start = HEADROOM - headerLength;
+            Header.write(scratch.bytes, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(),
+                    payload);
+            out.put(scratch.bytes, start, size);
+            messages++;
+            datagrams++;
+            return size;
+        } finally {
+            scratch.release();
         }
-        if (out.remaining() < size) {
-            throw new IllegalArgumentException(describe(envelope) + ": the buffer has " + out.remaining()
-                    + " bytes left; the datagram needs " + size);
-        }
-        int start = HEADROOM - headerLength;
-        Header.write(scratch, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(), payload);
-        out.put(scratch, start, size);
-        messages++;
-        datagrams++;
-        return size;
     }
 
     /**
@@ -88,23 +97,29 @@ public final class MessageEncoder {
      * @throws IllegalArgumentException if the payload is over {@link WireFormat#MAX_PAYLOAD}
      */
     public int encode(Envelope envelope, DatagramSink sink) {
-        int senderBytes = Utf8.length(envelope.sender());
-        int payload = writePayload(envelope);
-        int headerLength = Header.length(senderBytes);
-        messages++;
-        if (headerLength + payload <= datagramLimit) {
-            int start = HEADROOM - headerLength;
-            Header.write(scratch, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(), payload);
-            scratchView.clear().position(start).limit(start + headerLength + payload);
-            datagrams++;
-            sink.datagram(scratchView);
-            return 1;
+        Scratch scratch = Scratch.acquire();
+        try {
+            int senderBytes = Utf8.length(envelope.sender());
+            int payload = writePayload(scratch, envelope);
+            int headerLength = Header.length(senderBytes);
+            messages++;
+            if (headerLength + payload <= datagramLimit) {
+                int start = HEADROOM - headerLength;
+                Header.write(scratch.bytes, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(),
+                        payload);
+                scratch.view.clear().position(start).limit(start + headerLength + payload);
+                datagrams++;
+                sink.datagram(scratch.view);
+                return 1;
+            }
+            fragmented++;
+            int n = fragmenter.emit(scratch.bytes, HEADROOM, payload, envelope.type(), envelope.sender(), senderBytes,
+                    envelope.id(), sink);
+            datagrams += n;
+            return n;
+        } finally {
+            scratch.release();
         }
-        fragmented++;
-        int n = fragmenter.emit(scratch, HEADROOM, payload, envelope.type(), envelope.sender(), senderBytes,
-                envelope.id(), sink);
-        datagrams += n;
-        return n;
     }
 
     /** Encodes a message into fresh arrays, one per datagram: for tests and occasional senders. */
@@ -133,8 +148,9 @@ public final class MessageEncoder {
         return fragmented;
     }
 
-    private int writePayload(Envelope envelope) {
-        writer.reset(HEADROOM, scratch.length);
+    private static int writePayload(Scratch scratch, Envelope envelope) {
+        ByteWriter writer = scratch.writer;
+        writer.reset(HEADROOM, scratch.bytes.length);
         try {
             BodyCodec.of(envelope.type()).write(envelope.body(), writer);
         } catch (PayloadOverflow e) {
@@ -142,6 +158,32 @@ public final class MessageEncoder {
                     + " bytes, the limit of one message");
         }
         return writer.position() - HEADROOM;
+    }
+
+    /**
+     * A payload's scratch buffer, with a view of it for sinks and a writer over it. The thread's own is
+     * lent to one encode at a time; an encode that finds it lent (one started from inside another's
+     * sink) gets a fresh one, so no encode ever writes into bytes a sink is still reading.
+     */
+    private static final class Scratch {
+        final byte[] bytes = new byte[HEADROOM + WireFormat.MAX_PAYLOAD];
+        final ByteBuffer view = ByteBuffer.wrap(bytes).asReadOnlyBuffer();
+        final ByteWriter writer = new ByteWriter(bytes, () -> PayloadOverflow.INSTANCE);
+        /** Whether this is the thread's own buffer, lent out now. */
+        private boolean lent;
+
+        static Scratch acquire() {
+            Scratch own = SCRATCH.get();
+            if (own.lent) {
+                return new Scratch();
+            }
+            own.lent = true;
+            return own;
+        }
+
+        void release() {
+            lent = false;
+        }
     }
 
     /** Thrown by the writer when a payload does not fit; carries nothing, so one instance serves. */
