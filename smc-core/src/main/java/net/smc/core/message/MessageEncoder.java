@@ -27,6 +27,8 @@ public final class MessageEncoder {
 
     private final int datagramLimit;
     private final Fragmenter fragmenter;
+    /** The scratch of the thread this encoder last ran on: found again without the thread-local's look-up. */
+    private Scratch recent;
     private long messages;
     private long datagrams;
     private long fragmented;
@@ -62,7 +64,7 @@ public final class MessageEncoder {
      *                                  has too little room
      */
     public int encode(Envelope envelope, ByteBuffer out) {
-        Scratch scratch = Scratch.acquire();
+        Scratch scratch = acquire();
         try {
             int senderBytes = Utf8.length(envelope.sender());
             int payload = writePayload(scratch, envelope);
@@ -97,7 +99,7 @@ public final class MessageEncoder {
      * @throws IllegalArgumentException if the payload is over {@link WireFormat#MAX_PAYLOAD}
      */
     public int encode(Envelope envelope, DatagramSink sink) {
-        Scratch scratch = Scratch.acquire();
+        Scratch scratch = acquire();
         try {
             int senderBytes = Utf8.length(envelope.sender());
             int payload = writePayload(scratch, envelope);
@@ -148,6 +150,20 @@ public final class MessageEncoder {
         return fragmented;
     }
 
+    /** The thread's scratch, lent to this encode; a fresh one if it is lent already. */
+    private Scratch acquire() {
+        Scratch own = recent;
+        if (own == null || own.owner != Thread.currentThread()) {
+            own = SCRATCH.get();
+            recent = own;
+        }
+        if (own.lent) {
+            return new Scratch();
+        }
+        own.lent = true;
+        return own;
+    }
+
     private static int writePayload(Scratch scratch, Envelope envelope) {
         ByteWriter writer = scratch.writer;
         writer.reset(HEADROOM, scratch.bytes.length);
@@ -169,17 +185,10 @@ public final class MessageEncoder {
         final byte[] bytes = new byte[HEADROOM + WireFormat.MAX_PAYLOAD];
         final ByteBuffer view = ByteBuffer.wrap(bytes).asReadOnlyBuffer();
         final ByteWriter writer = new ByteWriter(bytes, () -> PayloadOverflow.INSTANCE);
-        /** Whether this is the thread's own buffer, lent out now. */
+        /** The thread that made it: a thread's own is used on that thread only. */
+        final Thread owner = Thread.currentThread();
+        /** Whether it is lent to an encode now. */
         private boolean lent;
-
-        static Scratch acquire() {
-            Scratch own = SCRATCH.get();
-            if (own.lent) {
-                return new Scratch();
-            }
-            own.lent = true;
-            return own;
-        }
 
         void release() {
             lent = false;
