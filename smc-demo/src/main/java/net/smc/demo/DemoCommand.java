@@ -2,7 +2,6 @@ package net.smc.demo;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -101,8 +100,7 @@ final class DemoCommand implements Callable<Integer> {
         if (limit != null && (!(limit > 0) || limit > 86_400)) {
             throw new ParameterException(spec.commandLine(), "--limit " + limit + " must be above 0 and at most 86400 seconds");
         }
-        Path dir = io.workingDir().resolve(out);
-        Files.createDirectories(dir);
+        Path dir = OutFolder.make(spec, io.workingDir(), out);
         if (scenario.equals("reconnaissance")) {
             try {
                 return new ReconnaissanceDemo(io).run(seed, loss, limit == null ? -1 : Math.round(limit * 1000), gui, speed, dir);

@@ -202,7 +202,7 @@ final class KeysCommand implements Callable<Integer> {
     }
 
     private int writeKeyPair(CommandSpec spec, Path dir, String name, KeyFiles.Use use, String comment, boolean force) {
-        Path target = outputDirectory(spec, dir);
+        Path target = OutFolder.make(spec, io.workingDir(), dir);
         Path keyFile = target.resolve(name + ".key");
         Path pubFile = target.resolve(name + ".pub");
         String command = spec.qualifiedName();
@@ -323,18 +323,6 @@ final class KeysCommand implements Callable<Integer> {
     private void printKey(String label, VerificationKey key) {
         io.stdout().println(label + ": " + java.util.Base64.getEncoder().encodeToString(key.bytes()));
         io.stdout().println(label.replace("key", "key id") + ": " + key.id());
-    }
-
-    private Path outputDirectory(CommandSpec spec, Path dir) {
-        Path target = io.workingDir().resolve(dir);
-        if (Files.exists(target) && !Files.isDirectory(target)) {
-            throw new ParameterException(spec.commandLine(), "--out '" + dir + "': not a directory");
-        }
-        try {
-            return Files.createDirectories(target);
-        } catch (IOException e) {
-            throw new ParameterException(spec.commandLine(), "--out '" + dir + "': cannot create the directory: " + e.getMessage());
-        }
     }
 
     private boolean refuseExisting(String command, Path file) {

@@ -3,12 +3,15 @@ package net.smc.demo;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -71,7 +74,7 @@ final class SetupTimeCommand implements Callable<Integer> {
     List<Integer> roles;
 
     @Option(names = "--schemes", split = ",", paramLabel = "SCHEME", defaultValue = "distributed,centralised",
-            description = "distributed, centralised or both (default: ${DEFAULT-VALUE}).")
+            description = "distributed, centralised, or both (default: ${DEFAULT-VALUE}).")
     List<String> schemes;
 
     @Option(names = "--runs", defaultValue = "20", description = "Runs per point (default: ${DEFAULT-VALUE}).")
@@ -156,13 +159,13 @@ final class SetupTimeCommand implements Callable<Integer> {
         RadioNetwork radio = radio();
         boolean sim = transports.contains("sim");
         boolean udp = transports.contains("udp");
-        Path dir = io.workingDir().resolve(out);
+
         Path boot = io.workingDir().resolve(policies).resolve("boot/events.p2");
         if (!Files.isRegularFile(boot)) {
             throw new ParameterException(spec.commandLine(), "--policies " + policies + ": no boot/events.p2 in it; "
                     + "it must be the project's policies/ folder");
         }
-        Files.createDirectories(dir);
+        Path dir = OutFolder.make(spec, io.workingDir(), out);
         Map<Integer, TreeShape> shapes = new LinkedHashMap<>();
         for (int n : roles) {
             try {
@@ -178,6 +181,8 @@ final class SetupTimeCommand implements Callable<Integer> {
         } else if (costsFile != null) {
             try {
                 costs = CpuCosts.load(io.workingDir().resolve(costsFile), note -> io.stdout().println("costs: " + note));
+            } catch (NoSuchFileException e) {
+                throw new ParameterException(spec.commandLine(), "--costs " + costsFile + ": no such file");
             } catch (IOException | IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), "--costs " + costsFile + ": " + e.getMessage());
             }
@@ -335,17 +340,19 @@ final class SetupTimeCommand implements Callable<Integer> {
                 loss == null ? model.loss() : loss);
     }
 
+    /** The schemes asked for, each once, in the order first named ("both": distributed, centralised). */
     private List<Scheme> schemes() {
-        List<Scheme> list = new ArrayList<>();
+        Set<Scheme> set = new LinkedHashSet<>();
         for (String s : schemes) {
             switch (s.trim().toLowerCase(Locale.ROOT)) {
-                case "distributed" -> list.add(Scheme.DISTRIBUTED);
-                case "centralised", "centralized" -> list.add(Scheme.CENTRALISED);
+                case "distributed" -> set.add(Scheme.DISTRIBUTED);
+                case "centralised", "centralized" -> set.add(Scheme.CENTRALISED);
+                case "both" -> set.addAll(List.of(Scheme.DISTRIBUTED, Scheme.CENTRALISED));
                 default -> throw new ParameterException(spec.commandLine(), "--schemes: unknown scheme '" + s
-                        + "'; the schemes are distributed and centralised");
+                        + "'; the schemes are distributed and centralised (both: the two)");
             }
         }
-        return list;
+        return List.copyOf(set);
     }
 
     private void checkArguments() {

@@ -38,6 +38,15 @@ class DemoCommandTest {
     }
 
     @Test
+    void anOutThatIsAFile_isAUsageErrorNamingIt(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("taken"), "not a folder");
+        Smc.Result r = Smc.in(PROJECT).run("demo", "rescue", "--out", file.toString());
+        assertEquals(2, r.status(), r.out() + r.err());
+        assertTrue(r.err().contains("--out '" + file + "': not a directory (a file of that name is there)"), r.err());
+        assertEquals("not a folder", Files.readString(file), "left as it was");
+    }
+
+    @Test
     void rescue_thatRunsOutOfTime_exitsOne_withTheReason(@TempDir Path out) {
         Smc.Result r = Smc.in(PROJECT).run("demo", "--limit", "5", "--out", out.toString());
         assertEquals(1, r.status(), r.out() + r.err());

@@ -208,6 +208,35 @@ class SetupTimeCommandTest {
     }
 
     @Test
+    void bothSchemes_byThatWord_orNamedTwice_runEachSchemeOnce() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "both,distributed,centralized", "--out", "out", "--costs", costs().toString(),
+                "--policies", policies().toString());
+        assertEquals(0, r.status(), r.err());
+        List<String> rows = Files.readAllLines(dir.resolve("out/setup-time.csv"));
+        assertEquals(List.of("distributed", "centralised"), rows.subList(1, rows.size()).stream()
+                .map(row -> row.split(",")[1]).toList(), String.join("\n", rows));
+    }
+
+    @Test
+    void anOutThatIsAFile_isAUsageErrorNamingIt() throws Exception {
+        Files.writeString(dir.resolve("taken"), "not a folder");
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--out", "taken",
+                "--costs", costs().toString(), "--policies", policies().toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("--out 'taken': not a directory (a file of that name is there)"), r.err());
+        assertEquals("not a folder", Files.readString(dir.resolve("taken")), "left as it was");
+    }
+
+    @Test
+    void aCostsFileThatIsNotThere_isAUsageErrorSayingSo() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--out", "o",
+                "--costs", "missing.properties", "--policies", policies().toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("--costs missing.properties: no such file"), r.err());
+    }
+
+    @Test
     void tooFewRolesForTheDepth_isAUsageError() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "3", "--out", "o",
                 "--policies", policies().toString());
