@@ -1,11 +1,13 @@
 package net.smc.demo;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -21,9 +23,11 @@ import java.util.concurrent.FutureTask;
 import java.util.concurrent.RunnableFuture;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.Stream;
 
 import net.smc.core.cell.Scheme;
 import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionException;
 import net.smc.core.mission.MissionLoader;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.sim.experiment.Calibration;
@@ -175,6 +179,48 @@ final class SetupTimeCommand implements Callable<Integer> {
             }
         }
         Path work = Files.createTempDirectory("smc-setup-time");
+        try {
+            return run(schemeList, radio, sim, dir, boot, shapes, work);
+        } finally {
+            deleteTree(work);
+        }
+    }
+
+    /** A point's generated mission, loaded for each scheme. */
+    private record Prepared(GeneratedMission generated, Map<Scheme, Mission> missions) {
+    }
+
+    /**
+     * Generates and loads every point's mission before any run, so that a shape whose mission cannot
+     * load (a manager of hundreds of role types whose role-mission outgrows a policy reply, say) is a
+     * usage error naming it, not a failure after the points before it have run.
+     */
+    private Map<TreeShape, Prepared> prepare(Map<Integer, TreeShape> shapes, List<Scheme> schemeList, Path work, Path boot)
+            throws IOException {
+        Map<TreeShape, Prepared> prepared = new LinkedHashMap<>();
+        for (TreeShape shape : shapes.values()) {
+            GeneratedMission g = MissionGenerator.write(shape, work.resolve("m" + shape.roles()), boot);
+            MissionLoader loader = new MissionLoader(new PolicyRepository(g.repository()));
+            Map<Scheme, Mission> missions = new LinkedHashMap<>();
+            for (Scheme scheme : schemeList) {
+                try {
+                    missions.put(scheme, loader.load(g.instanceFile(scheme)));
+                } catch (MissionException e) {
+                    throw new ParameterException(spec.commandLine(), "--roles " + shape.roles() + " (depth "
+                            + shape.depth() + ", fan-out " + shape.fanOut() + "): the generated " + scheme.name()
+                            .toLowerCase(Locale.ROOT) + " mission does not load: " + e.errors().get(0).message()
+                            + (e.errors().size() > 1 ? " (and " + (e.errors().size() - 1) + " more)" : "")
+                            + "; a deeper tree or a smaller --fan-out gives each manager fewer roles");
+                }
+            }
+            prepared.put(shape, new Prepared(g, missions));
+        }
+        return prepared;
+    }
+
+    private Integer run(List<Scheme> schemeList, RadioNetwork radio, boolean sim, Path dir, Path boot,
+                        Map<Integer, TreeShape> shapes, Path work) throws Exception {
+        Map<TreeShape, Prepared> prepared = prepare(shapes, schemeList, work, boot);
         CpuCosts costs = null;
         if (!sim) {
             io.stdout().println("transport: Netty UDP on loopback, signed traffic, wall-clock times");
@@ -209,10 +255,9 @@ final class SetupTimeCommand implements Callable<Integer> {
         try (Writer csv = Files.newBufferedWriter(dir.resolve("setup-time.csv"))) {
             SetupTimeCsv.writeHeader(csv);
             for (TreeShape shape : shapes.values()) {
-                GeneratedMission g = MissionGenerator.write(shape, work.resolve("m" + shape.roles()), boot);
-                MissionLoader loader = new MissionLoader(new PolicyRepository(g.repository()));
+                GeneratedMission g = prepared.get(shape).generated();
                 for (Scheme scheme : schemeList) {
-                    Mission mission = loader.load(g.instanceFile(scheme));
+                    Mission mission = prepared.get(shape).missions().get(scheme);
                     for (String transport : transports) {
                         long pointStart = System.nanoTime();
                         progress(results.size(), total, shape.roles(), scheme, t0);
@@ -263,6 +308,15 @@ final class SetupTimeCommand implements Callable<Integer> {
     }
 
     /** A run's result and its diagnostic report (empty over UDP). */
+    /** Deletes the generated missions (a 1,000-role point writes some 2,000 files), quietly: they are scratch. */
+    private static void deleteTree(Path root) {
+        try (Stream<Path> paths = Files.walk(root)) {
+            paths.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+        } catch (IOException | UncheckedIOException e) {
+            // left behind in the temporary directory; nothing depends on it
+        }
+    }
+
     private record SimulatedRun(SetupResult result, String report) {
     }
 

@@ -29,7 +29,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "validate", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = {
             "Checks a mission instance file and the mission class file it names (<missionClass href=...>), "
-                    + "and resolves every policy URI in the policy repository; each policy must parse.",
+                    + "and resolves every policy URI in the policy repository; each policy must parse and fit one policy reply "
+                    + "(65000 bytes of text).",
             "A valid mission is printed to standard output: its parameters, its roles with their "
                     + "cardinalities (minimal..optimal), requirements and policies, the management tree "
                     + "and the colocation rules. Otherwise every error of both files goes to standard "

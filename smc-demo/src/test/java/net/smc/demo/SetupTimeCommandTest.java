@@ -236,6 +236,18 @@ class SetupTimeCommandTest {
         assertTrue(r.err().contains("--costs missing.properties: no such file"), r.err());
     }
 
+    /** Depth 2: the commander manages 199 role types, and its role-mission outgrows what a policy reply carries. */
+    @Test
+    void aShapeWhoseMissionCannotLoad_isAUsageErrorNamingIt_beforeAnyRun() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5,200", "--depth", "2", "--runs", "1",
+                "--out", "out", "--costs", costs().toString(), "--policies", policies().toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("--roles 200 (depth 2, fan-out 199): the generated distributed mission does not load: "
+                + "policy 'policy:/roles/commander/distributed' is ") && r.err().contains("a policy file must be at most 65000"),
+                r.err());
+        assertTrue(!r.out().contains("5 roles distributed"), "no point ran: " + r.out());
+    }
+
     @Test
     void tooFewRolesForTheDepth_isAUsageError() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "3", "--out", "o",

@@ -8,7 +8,9 @@ import net.smc.core.cell.TeamState.ParkedRequest;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.PolicyRequest;
+import net.smc.core.message.WireFormat;
 import net.smc.core.transport.Address;
+import net.smc.core.wire.StrictUtf8;
 
 /**
  * A manager's policy files for the vehicles below it (part of {@link Recruiter}): answers their
@@ -42,7 +44,7 @@ final class PolicyServer {
         for (String uri : ctx.policiesWithAssignment(role)) {
             Optional<PolicyStore.Entry> entry = held(uri, PolicyStore.ANY_VERSION);
             if (entry.isPresent()) {
-                ctx.comm().send(to, new PolicyReply(assignmentId, uri, entry.get().version(), entry.get().text()));
+                reply(assignmentId, uri, entry.get()).ifPresent(reply -> ctx.comm().send(to, reply));
             } else if (onItsWay(uri)) {
                 st.parkedPolicyRequests.computeIfAbsent(uri, u -> new ArrayList<>())
                         .add(new ParkedRequest(to, assignmentId, PolicyStore.ANY_VERSION, ctx.clock().nowMillis()));
@@ -71,7 +73,26 @@ final class PolicyServer {
             ctx.reject(env, "policy " + r.uri() + " version " + r.version() + " is not held here");
             return;
         }
-        ctx.comm().send(back.get(), new PolicyReply(env.id(), r.uri(), entry.get().version(), entry.get().text()));
+        Optional<PolicyReply> reply = reply(env.id(), r.uri(), entry.get());
+        if (reply.isEmpty()) {
+            ctx.reject(env, "policy " + r.uri() + " is " + StrictUtf8.length(entry.get().text())
+                    + " bytes of text; a policy reply carries at most " + WireFormat.MAX_POLICY_TEXT);
+            return;
+        }
+        ctx.comm().send(back.get(), reply.get());
+    }
+
+    /**
+     * The reply carrying {@code entry}, or empty when its text is longer than a policy reply may
+     * carry. A mission's loader refuses such files, but a commander reads its repository while
+     * the mission runs, and a file changed meanwhile must not throw out of the cell's handler: it
+     * is not sent, and the vehicle that needs it asks again and is refused, named.
+     */
+    private static Optional<PolicyReply> reply(long inReplyTo, String uri, PolicyStore.Entry entry) {
+        if (StrictUtf8.length(entry.text()) > WireFormat.MAX_POLICY_TEXT) {
+            return Optional.empty();
+        }
+        return Optional.of(new PolicyReply(inReplyTo, uri, entry.version(), entry.text()));
     }
 
     /**
@@ -90,7 +111,7 @@ final class PolicyServer {
         }
         parked.removeIf(p -> {
             Optional<PolicyStore.Entry> entry = ctx.store().get(uri, p.version());
-            entry.ifPresent(e -> ctx.comm().send(p.from(), new PolicyReply(p.envelopeId(), uri, e.version(), e.text())));
+            entry.flatMap(e -> reply(p.envelopeId(), uri, e)).ifPresent(reply -> ctx.comm().send(p.from(), reply));
             return entry.isPresent();
         });
         if (parked.isEmpty()) {

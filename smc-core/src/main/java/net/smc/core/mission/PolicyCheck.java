@@ -8,6 +8,9 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+
+import net.smc.core.message.WireFormat;
+import net.smc.core.wire.StrictUtf8;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
@@ -15,8 +18,8 @@ import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
 
 /**
- * Whether a policy URI resolves in the repository and its file parses, so that a mission never
- * reaches a vehicle with a policy that cannot load. The file is parsed, not run: running it needs
+ * Whether a policy URI resolves in the repository and its file parses and fits one policy reply,
+ * so that a mission never reaches a vehicle with a policy that cannot load or cannot be sent. The file is parsed, not run: running it needs
  * the role's managed objects. Includes resolve as a cell resolves them (beside the including file,
  * then in the repository). Answers are remembered per URI: roles often share a policy.
  */
@@ -49,6 +52,12 @@ final class PolicyCheck {
         if (text.isEmpty()) {
             return Optional.of("policy '" + uri + "' not found: no file " + repository.root().relativize(file)
                     .toString().replace('\\', '/') + " in the policy repository; every policy URI must resolve in the repository");
+        }
+        int bytes = StrictUtf8.length(text.get());
+        if (bytes > WireFormat.MAX_POLICY_TEXT) {
+            return Optional.of("policy '" + uri + "' is " + bytes + " bytes of text; a policy file must be at most "
+                    + WireFormat.MAX_POLICY_TEXT + " bytes, what one policy reply carries to a vehicle that takes "
+                    + "the role (split it into several files)");
         }
         Map<String, Path> files = new HashMap<>(Map.of(uri, file));
         Unit unit;

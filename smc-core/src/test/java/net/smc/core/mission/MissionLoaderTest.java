@@ -269,6 +269,23 @@ class MissionLoaderTest {
                 e.getMessage());
     }
 
+    /** A vehicle that takes the role gets its files in one policy reply each, so none may be longer than a reply carries. */
+    @Test
+    void aPolicyLongerThanAPolicyReplyCarries_isRefusedNamingItsSize_oneAtTheLimitLoads() throws Exception {
+        String line = "root print: \"" + "x".repeat(84) + "\".\n";   // 100 bytes
+        write("policies/roles/relay/mission.p2", line.repeat(650));    // 65,000 bytes: the limit
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+        assertEquals(List.of("policy:/roles/relay/mission"), loader.load(instance).role("relay").orElseThrow().policies());
+
+        write("policies/roles/relay/mission.p2", line.repeat(650) + "\n");
+        MissionException e = assertThrows(MissionException.class, () -> new MissionLoader(new PolicyRepository(dir.resolve("policies"))).load(instance));
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertEquals("policy 'policy:/roles/relay/mission' is 65001 bytes of text; a policy file must be at most 65000 "
+                + "bytes, what one policy reply carries to a vehicle that takes the role (split it into several files)",
+                e.errors().get(0).message());
+    }
+
     @Test
     void dtd_isRefused() throws Exception {
         write("reconnaissance.class.xml", TABLE_III);
