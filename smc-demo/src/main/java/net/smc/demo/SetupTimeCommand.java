@@ -163,7 +163,6 @@ final class SetupTimeCommand implements Callable<Integer> {
         RadioNetwork radio = radio();
         boolean sim = transports.contains("sim");
         boolean udp = transports.contains("udp");
-
         Path boot = io.workingDir().resolve(policies).resolve("boot/events.p2");
         if (!Files.isRegularFile(boot)) {
             throw new ParameterException(spec.commandLine(), "--policies " + policies + ": no boot/events.p2 in it; "
@@ -220,11 +219,8 @@ final class SetupTimeCommand implements Callable<Integer> {
 
     private Integer run(List<Scheme> schemeList, RadioNetwork radio, boolean sim, Path dir, Path boot,
                         Map<Integer, TreeShape> shapes, Path work) throws Exception {
-        Map<TreeShape, Prepared> prepared = prepare(shapes, schemeList, work, boot);
         CpuCosts costs = null;
-        if (!sim) {
-            io.stdout().println("transport: Netty UDP on loopback, signed traffic, wall-clock times");
-        } else if (costsFile != null) {
+        if (sim && costsFile != null) {
             try {
                 costs = CpuCosts.load(io.workingDir().resolve(costsFile), note -> io.stdout().println("costs: " + note));
             } catch (NoSuchFileException e) {
@@ -232,7 +228,11 @@ final class SetupTimeCommand implements Callable<Integer> {
             } catch (IOException | IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), "--costs " + costsFile + ": " + e.getMessage());
             }
-        } else {
+        }
+        Map<TreeShape, Prepared> prepared = prepare(shapes, schemeList, work, boot);
+        if (!sim) {
+            io.stdout().println("transport: Netty UDP on loopback, signed traffic, wall-clock times");
+        } else if (costs == null) {
             io.stderr().println("calibrating: measuring the CPU cost of each operation ...");
             io.stderr().flush();
             costs = Calibration.measure(boot, MissionGenerator.write(TreeShape.of(20, 4), work.resolve("calibration"), boot));
