@@ -162,7 +162,6 @@ final class SetupTimeCommand implements Callable<Integer> {
         checkArguments();
         RadioNetwork radio = radio();
         boolean sim = transports.contains("sim");
-        boolean udp = transports.contains("udp");
         Path boot = io.workingDir().resolve(policies).resolve("boot/events.p2");
         if (!Files.isRegularFile(boot)) {
             throw new ParameterException(spec.commandLine(), "--policies " + policies + ": no boot/events.p2 in it; "

@@ -42,9 +42,7 @@ final class SetupTimeShape {
     static String describe(List<SetupResult> results) {
         // transport -> scheme -> roles -> complete set-up times
         Map<String, Map<Scheme, Map<Integer, List<Double>>>> runs = new TreeMap<>();
-        Map<String, TreeSet<Integer>> roles = new TreeMap<>();
         for (SetupResult r : results) {
-            roles.computeIfAbsent(r.transport(), t -> new TreeSet<>()).add(r.roles());
             List<Double> times = runs.computeIfAbsent(r.transport(), t -> new TreeMap<>())
                     .computeIfAbsent(r.scheme(), s -> new TreeMap<>()).computeIfAbsent(r.roles(), n -> new ArrayList<>());
             if (r.complete()) {
@@ -53,7 +51,9 @@ final class SetupTimeShape {
         }
         StringBuilder out = new StringBuilder();
         for (Map.Entry<String, Map<Scheme, Map<Integer, List<Double>>>> t : runs.entrySet()) {
-            out.append(block(t.getKey(), List.copyOf(roles.get(t.getKey())), medians(t.getValue())));
+            TreeSet<Integer> roles = new TreeSet<>();
+            t.getValue().values().forEach(points -> roles.addAll(points.keySet()));
+            out.append(block(t.getKey(), List.copyOf(roles), medians(t.getValue())));
         }
         return out.toString();
     }

@@ -36,24 +36,7 @@ import org.openjdk.jmh.annotations.Warmup;
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MICROSECONDS)
 public class PolicyTextCodecBench {
-    private static final String MANAGER = """
-            // Role-mission of b0l1 (generated): it finds a vehicle for each role it manages
-            // (newUAV: the vehicle has the role's kit; then its full capability description is asked for)
-            // and has a failed holder's role re-assigned.
-
-            assign := root/factory/ecapolicy create.
-            assign event: /event/newUAV;
-                condition: [:lowLevelCap :uav :credential |
-                    root/discovery uav: uav has: #("kit_b0l2") cap: lowLevelCap auth: credential];
-                action: [:uav | root/discovery fullCapReq: uav role: "b0l2"].
-            root/role/b0l1/policy at: "assign_b0l2" put: assign.
-
-            reassign := root/factory/ecapolicy create.
-            reassign event: /event/UAVFailure;
-                condition: [:role | role == "b0l2"];
-                action: [:role | root/role/b0l1 reassign: role scheme: "default"].
-            root/role/b0l1/policy at: "reassign_b0l2" put: reassign.
-            """;
+    private static final String MANAGER = Samples.MANAGER_ROLE_MISSION;
 
     private static final String AUTHORISATIONS = """
             // Authorisations of the relay: the surveyor that manages it may use its management

@@ -122,7 +122,7 @@ final class PolicyServer {
     /** Drops the requests and files to send that waited longer than the failure timeout. */
     void expire(long now) {
         if (st.parkedPolicyRequests.isEmpty()) {
-            return; // the usual case once a team has formed (see Recruiter.expire)
+            return; // the usual case once a team has formed (see Recruiter.dropIf)
         }
         st.parkedPolicyRequests.values().removeIf(parked -> {
             parked.removeIf(p -> now - p.atMillis() > ctx.timing().failureTimeoutMillis());

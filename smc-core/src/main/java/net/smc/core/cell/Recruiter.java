@@ -437,25 +437,24 @@ final class Recruiter {
     }
 
     /** Drops stale requests and reservations, and reports each reservation that expired. */
+    /**
+     * Drops the entries of {@code map} whose values are {@code stale}. Every cell ticks twice a second
+     * and these maps are mostly empty once a team has formed: an empty one is passed over without the
+     * iterator and predicate a {@code removeIf} allocates (and without walking the table a map keeps at
+     * the size it grew to while the team formed).
+     */
+    private static <V> void dropIf(Map<?, V> map, Predicate<? super V> stale) {
+        if (!map.isEmpty()) {
+            map.values().removeIf(stale);
+        }
+    }
+
     void expire(long now) {
-        // Every cell ticks twice a second and these are mostly empty once a team has formed; an empty
-        // map is passed over without the iterator and predicate a removeIf allocates (and without
-        // walking the table a map keeps at the size it grew to while the team formed).
-        if (!st.abandoned.isEmpty()) {
-            st.abandoned.values().removeIf(until -> now >= until);
-        }
-        if (!st.capabilityRequests.isEmpty()) {
-            st.capabilityRequests.values().removeIf(p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
-        }
-        if (!st.heard.isEmpty()) {
-            st.heard.values().removeIf(h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
-        }
-        if (!st.unchecked.isEmpty()) {
-            st.unchecked.values().removeIf(u -> now - u.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
-        }
-        if (!st.refused.isEmpty()) {
-            st.refused.values().removeIf(r -> now - r.atMillis() >= ctx.timing().refusalMillis());
-        }
+        dropIf(st.abandoned, until -> now >= until);
+        dropIf(st.capabilityRequests, p -> now - p.sinceMillis > ctx.timing().failureTimeoutMillis());
+        dropIf(st.heard, h -> now - h.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        dropIf(st.unchecked, u -> now - u.atMillis() > 4 * ctx.timing().failureTimeoutMillis());
+        dropIf(st.refused, r -> now - r.atMillis() >= ctx.timing().refusalMillis());
         policies.expire(now);
         for (Map.Entry<Seat, Owned> e : st.owned.entrySet()) {
             Owned o = e.getValue();

@@ -16,25 +16,8 @@ import net.smc.core.wire.ByteWriter;
 
 /** A policy reply's text on the wire: deflated over the dictionary when that is shorter, and inflated with bounds. */
 class PolicyTextCodingTest {
-    /** A role-mission as the set-up time experiment generates them (one manager's, 797 bytes). */
-    private static final String MISSION = """
-            // Role-mission of b0l1 (generated): it finds a vehicle for each role it manages
-            // (newUAV: the vehicle has the role's kit; then its full capability description is asked for)
-            // and has a failed holder's role re-assigned.
-
-            assign := root/factory/ecapolicy create.
-            assign event: /event/newUAV;
-                condition: [:lowLevelCap :uav :credential |
-                    root/discovery uav: uav has: #("kit_b0l2") cap: lowLevelCap auth: credential];
-                action: [:uav | root/discovery fullCapReq: uav role: "b0l2"].
-            root/role/b0l1/policy at: "assign_b0l2" put: assign.
-
-            reassign := root/factory/ecapolicy create.
-            reassign event: /event/UAVFailure;
-                condition: [:role | role == "b0l2"];
-                action: [:role | root/role/b0l1 reassign: role scheme: "default"].
-            root/role/b0l1/policy at: "reassign_b0l2" put: reassign.
-            """.repeat(2);
+    /** Two generated managers' role-missions ({@link Samples#MANAGER_ROLE_MISSION} twice). */
+    private static final String MISSION = Samples.MANAGER_ROLE_MISSION.repeat(2);
 
     /** Payload bytes before the text: inReplyTo 8, URI "u" 1 + 1, version 4. */
     private static final int BEFORE_TEXT = 8 + 2 + 4;
