@@ -122,29 +122,43 @@ final class SetupTimeCommand implements Callable<Integer> {
                     + "runs over UDP, timed on the wall clock, always run one at a time."})
     Integer jobs;
 
+    @Option(names = "--network", paramLabel = "MODEL", defaultValue = "adhoc", description = {"The network model of "
+            + "the simulated runs: 'adhoc' (an 802.11 ad-hoc radio network: 2 hops of 2 ms + up to 2 ms, 2.75 Mbit/s per "
+            + "sender, 1% loss) or 'lan' (one switched Ethernet, as the paper's testbed of Linux machines: 1 hop of up to "
+            + "1 ms, 100 Mbit/s, no loss); the options below replace its figures (default: ${DEFAULT-VALUE})."})
+    String network;
+
     @Option(names = "--hops", paramLabel = "N", description = "Radio hops between any two vehicles (default: "
-            + "the model's, 2).")
+            + "the model's: 2 adhoc, 1 lan).")
     Integer hops;
 
-    @Option(names = "--hop-latency", paramLabel = "MS", description = "Base delay of one hop, ms (default: the model's, 2).")
+    @Option(names = "--hop-latency", paramLabel = "MS", description = "Base delay of one hop, ms (default: the model's: 2 "
+            + "adhoc, 0 lan).")
     Long hopLatencyMillis;
 
     @Option(names = "--hop-jitter", paramLabel = "MS", description = "Largest extra delay of one hop, ms (default: the "
-            + "model's, 2).")
+            + "model's: 2 adhoc, 1 lan).")
     Long hopJitterMillis;
 
     @Option(names = "--bandwidth", paramLabel = "MBIT", description = "Each sender's radio rate, Mbit/s (default: the "
-            + "model's, 2.75).")
+            + "model's: 2.75 adhoc, 100 lan).")
     Double bandwidthMbit;
 
     @Option(names = "--loss", paramLabel = "P", description = "Chance that a datagram copy is lost, from 0 to below 1 "
-            + "(default: the model's, 0.01).")
+            + "(default: the model's: 0.01 adhoc, 0 lan).")
     Double loss;
 
     @Option(names = "--spare", paramLabel = "PCT", defaultValue = "0", description = {"Vehicles beyond the seats, in "
             + "percent of each role's seats, rounded up, built for that role like the others (default: ${DEFAULT-VALUE}: "
             + "one vehicle per seat). Simulated runs only."})
     int sparePercent;
+
+    @Option(names = "--warmup", paramLabel = "N", defaultValue = "0", description = {"Over UDP, N runs of each point "
+            + "before its recorded runs, not recorded (seeds after theirs): the JVM compiles the cells' code as it runs "
+            + "it, and a point's first runs over UDP are mostly that compiling (default: ${DEFAULT-VALUE}: every run "
+            + "recorded, as a vehicle's first set-up after it starts). Simulated runs charge measured, compiled costs "
+            + "and take no warm-up."})
+    int warmup;
 
     @Option(names = "--verbose", description = {"After each simulated run, a report on standard output: when the roles "
             + "of each level of the tree started, where the slowest of the deepest level's roles waited, the "
@@ -236,6 +250,10 @@ final class SetupTimeCommand implements Callable<Integer> {
             io.stderr().flush();
             costs = Calibration.measure(boot, MissionGenerator.write(TreeShape.of(20, 4), work.resolve("calibration"), boot));
         }
+        if (warmup > 0) {
+            io.stdout().println("warm-up: " + warmup + " unrecorded run" + (warmup == 1 ? "" : "s")
+                    + " of each point over UDP before its recorded runs");
+        }
         CpuCosts charged = costs;
         if (sim) {
             costs.save(dir.resolve("costs.properties"));
@@ -262,6 +280,10 @@ final class SetupTimeCommand implements Callable<Integer> {
                         progress(results.size(), total, shape.roles(), scheme, t0);
                         // Over UDP a run is timed on the wall clock, so it runs alone, on this thread.
                         boolean alone = transport.equals("udp");
+                        for (int w = 1; alone && w <= warmup; w++) {
+                            progress(results.size(), total, shape.roles() + " roles, warm-up " + w + "/" + warmup, t0);
+                            UdpSetupTimeRun.run(g, mission, scheme, runs + w, seed + runs + w, limitMillis);
+                        }
                         List<RunnableFuture<SimulatedRun>> point = new ArrayList<>();
                         for (int run = 1; run <= runs; run++) {
                             int r0 = run;
@@ -306,7 +328,6 @@ final class SetupTimeCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** A run's result and its diagnostic report (empty over UDP). */
     /** Deletes the generated missions (a 1,000-role point writes some 2,000 files), quietly: they are scratch. */
     private static void deleteTree(Path root) {
         try (Stream<Path> paths = Files.walk(root)) {
@@ -316,6 +337,7 @@ final class SetupTimeCommand implements Callable<Integer> {
         }
     }
 
+    /** A run's result and its diagnostic report (empty over UDP). */
     private record SimulatedRun(SetupResult result, String report) {
     }
 
@@ -361,13 +383,22 @@ final class SetupTimeCommand implements Callable<Integer> {
     /** The most radio hops, and the longest hop latency or jitter, the options take. */
     private static final int MAX_HOPS = 100;
     private static final long MAX_HOP_MILLIS = 60_000;
+    /** The most warm-up runs a point takes. */
+    private static final int MAX_WARMUP = 1_000;
 
     /**
-     * The radio network of the simulated runs: {@link RadioNetwork#ADHOC_80211} with what the options
-     * give in its place; a value out of range is a usage error naming the option.
+     * The radio network of the simulated runs: the model {@code --network} names
+     * ({@link RadioNetwork#ADHOC_80211} or {@link RadioNetwork#SWITCHED_LAN}) with what the options
+     * give in its place; a value out of range, or a model of another name, is a usage error naming
+     * the option.
      */
     private RadioNetwork radio() {
-        RadioNetwork model = RadioNetwork.ADHOC_80211;
+        RadioNetwork model = switch (network.trim().toLowerCase(Locale.ROOT)) {
+            case "adhoc" -> RadioNetwork.ADHOC_80211;
+            case "lan" -> RadioNetwork.SWITCHED_LAN;
+            default -> throw new ParameterException(spec.commandLine(), "--network '" + network
+                    + "': it must be 'adhoc' or 'lan'");
+        };
         if (hops != null && (hops < 1 || hops > MAX_HOPS)) {
             throw new ParameterException(spec.commandLine(), "--hops " + hops + ": it must be from 1 to " + MAX_HOPS);
         }
@@ -431,6 +462,13 @@ final class SetupTimeCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--spare " + sparePercent + ": it must be from 0 to "
                     + GeneratedMission.MAX_SPARE_PERCENT + " (percent of each role's seats)");
         }
+        if (warmup < 0 || warmup > MAX_WARMUP) {
+            throw new ParameterException(spec.commandLine(), "--warmup " + warmup + ": it must be from 0 to " + MAX_WARMUP);
+        }
+        if (warmup > 0 && !transports.contains("udp")) {
+            throw new ParameterException(spec.commandLine(), "--warmup " + warmup + " without --transport udp: simulated "
+                    + "runs charge measured costs of compiled code and take no warm-up");
+        }
         if (sparePercent > 0 && transports.contains("udp")) {
             throw new ParameterException(spec.commandLine(), "--spare " + sparePercent + " with --transport udp: spare "
                     + "vehicles are for simulated runs; a run over UDP has one vehicle per seat");
@@ -447,9 +485,12 @@ final class SetupTimeCommand implements Callable<Integer> {
     }
 
     private void progress(int done, int total, int roles, Scheme scheme, long t0) {
+        progress(done, total, scheme == null ? "done" : roles + " roles, " + scheme.name().toLowerCase(Locale.ROOT), t0);
+    }
+
+    private void progress(int done, int total, String what, long t0) {
         int width = 30;
         int filled = total == 0 ? width : done * width / total;
-        String what = scheme == null ? "done" : roles + " roles, " + scheme.name().toLowerCase(Locale.ROOT);
         io.stderr().printf(Locale.ROOT, "\r[%s%s] %d/%d runs  %-28s %6.0f s", "#".repeat(filled),
                 " ".repeat(width - filled), done, total, what, (System.nanoTime() - t0) / 1e9);
         io.stderr().flush();

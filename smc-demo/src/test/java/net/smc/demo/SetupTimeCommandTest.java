@@ -145,6 +145,44 @@ class SetupTimeCommandTest {
         assertTrue(Double.parseDouble(fast.get(1).split(",", -1)[4]) < 300, "the model's radio: " + fast.get(1));
     }
 
+    /**
+     * {@code --network lan}: the switched LAN's figures (one hop of at most 1 ms, 100 Mbit/s, no loss),
+     * so every run of the same seeds sets up faster than on the ad-hoc radio, whose shortest one-way
+     * trip alone is 4 ms and a level at least two of them; an option replaces one of its figures.
+     */
+    @Test
+    void lanNetwork_usesTheSwitchedLansFigures_andSetsUpFasterThanTheRadio() throws Exception {
+        String[] common = {"experiment", "setup-time", "--roles", "10", "--runs", "3", "--seed", "3", "--schemes",
+            "distributed", "--costs", costs().toString(), "--policies", policies().toString()};
+        Smc.Result lan = Smc.in(dir).run(concat(common, "--out", "lan", "--network", "LAN"));
+        assertEquals(0, lan.status(), lan.err());
+        assertTrue(lan.out().contains("network: 1 hop x (0 ms + up to 1 ms), 100.00 Mbit/s per sender, 0.0% loss"),
+                lan.out());
+        Smc.Result radio = Smc.in(dir).run(concat(common, "--out", "radio", "--network", "adhoc"));
+        assertEquals(0, radio.status(), radio.err());
+        List<String> fast = Files.readAllLines(dir.resolve("lan/setup-time.csv"));
+        List<String> slow = Files.readAllLines(dir.resolve("radio/setup-time.csv"));
+        assertEquals(4, fast.size(), String.join("\n", fast));
+        for (int i = 1; i < fast.size(); i++) {
+            double lanMs = Double.parseDouble(fast.get(i).split(",", -1)[4]);
+            double radioMs = Double.parseDouble(slow.get(i).split(",", -1)[4]);
+            assertTrue(lanMs < radioMs, "run " + i + ": lan " + lanMs + " ms against the radio's " + radioMs);
+        }
+        Smc.Result lossy = Smc.in(dir).run(concat(common, "--out", "lossy", "--network", "lan", "--hops", "3", "--loss",
+                "0.02"));
+        assertEquals(0, lossy.status(), lossy.err());
+        assertTrue(lossy.out().contains("network: 3 hops x (0 ms + up to 1 ms), 100.00 Mbit/s per sender, 2.0% loss"),
+                lossy.out());
+    }
+
+    @Test
+    void unknownNetwork_isAUsageErrorNamingTheModels() {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--network", "wifi", "--out", "o");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--network 'wifi': it must be 'adhoc' or 'lan'"), r.err());
+        assertTrue(!Files.exists(dir.resolve("o")), "refused before anything was written");
+    }
+
     @Test
     void radioValuesOutOfRange_areUsageErrorsNamingTheOption() {
         String[][] cases = {
@@ -298,6 +336,32 @@ class SetupTimeCommandTest {
         assertEquals(2, udp, String.join("\n", csv));
         assertTrue(r.out().contains("udp  median"), r.out());
         assertTrue(Files.size(dir.resolve("out/setup-time.png")) > 1_000);
+    }
+
+    /** Warm-up runs over UDP run before the recorded ones and are not recorded. */
+    @Test
+    void udpWarmup_runsBeforeTheRecordedRuns_andIsNotRecorded() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--transport", "udp",
+                "--schemes", "centralised", "--warmup", "2", "--out", "out", "--policies", policies().toString(),
+                "--limit", "60000");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("warm-up: 2 unrecorded runs of each point over UDP before its recorded runs"), r.out());
+        assertTrue(r.err().contains("5 roles, warm-up 1/2") && r.err().contains("5 roles, warm-up 2/2"), r.err());
+        List<String> csv = Files.readAllLines(dir.resolve("out/setup-time.csv"));
+        assertEquals(2, csv.size(), String.join("\n", csv));
+        assertTrue(csv.get(1).startsWith("5,centralised,udp,1,"), csv.get(1));
+    }
+
+    @Test
+    void warmupOutOfRange_orWithoutUdp_isAUsageError() {
+        Smc.Result negative = Smc.in(dir).run("experiment", "setup-time", "--warmup", "-1", "--transport", "udp",
+                "--roles", "5", "--out", "o");
+        assertEquals(2, negative.status());
+        assertTrue(negative.err().contains("--warmup -1: it must be from 0 to 1000"), negative.err());
+        Smc.Result sim = Smc.in(dir).run("experiment", "setup-time", "--warmup", "3", "--out", "o");
+        assertEquals(2, sim.status());
+        assertTrue(sim.err().contains("--warmup 3 without --transport udp"), sim.err());
+        assertTrue(!Files.exists(dir.resolve("o")), "refused before anything was written");
     }
 
     @Test
