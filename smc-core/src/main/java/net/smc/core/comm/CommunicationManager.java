@@ -403,11 +403,18 @@ public final class CommunicationManager {
         }
     }
 
-    /** The default listener: a critical message given up on is worth a warning. */
+    /**
+     * The default listener: a critical message given up on is worth a warning; one still out when
+     * the cell was stopped is not (stopping is the cell's owner's choice), and is logged at debug.
+     */
     private record LoggingListener(String vehicleId) implements DeliveryListener {
         @Override
         public void failed(long id, FailureReason reason) {
-            log.warn("'{}': critical message {} was not delivered: {}", vehicleId, id, reason);
+            if (reason == FailureReason.STOPPED) {
+                log.debug("'{}': critical message {} still out when the cell stopped", vehicleId, id);
+            } else {
+                log.warn("'{}': critical message {} was not delivered: {}", vehicleId, id, reason);
+            }
         }
     }
 }

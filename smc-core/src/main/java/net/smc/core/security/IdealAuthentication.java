@@ -252,8 +252,11 @@ public final class IdealAuthentication {
         }
     }
 
-    /** Counter and tag, 8 bytes each. */
-    static final int SEAL_BYTES = 16;
+    /**
+     * Counter and tag, 8 bytes each: a sealed datagram is the counter, the payload from
+     * {@link #PAYLOAD_OFFSET}, and the tag.
+     */
+    public static final int SEAL_BYTES = 16;
     /**
      * Where the payload (the encoded message) starts in a sealed datagram: after the 8-byte counter.
      * For what reads datagrams on the simulated network below this layer (a CPU model charging by

@@ -12,6 +12,8 @@ import java.util.function.ToIntFunction;
 
 import net.smc.core.message.MessageType;
 import net.smc.core.message.WireFormat;
+import net.smc.core.security.IdealAuthentication;
+import net.smc.core.security.WireSizes;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.CpuModel;
 import net.smc.sim.experiment.CpuLedger.Category;
@@ -23,9 +25,19 @@ import net.smc.sim.experiment.CpuLedger.Category;
  * <ul>
  *   <li>every datagram sent or received is encoded or decoded (fixed + per byte);</li>
  *   <li>a broadcast is signed (Ed25519) by its sender and verified by each receiver; a unicast is
- *       MAC'd (HMAC-SHA256) by both ends;</li>
- *   <li>the first datagram between two cells costs a key agreement (X25519) at each end, a signature
- *       at the sender and the credential's verification at the receiver;</li>
+ *       MAC'd (HMAC-SHA256) by both ends once its sender has a session with its receiver, and
+ *       signed and verified before; the first signed datagram a cell takes from another costs it
+ *       the verification of that vehicle's credential too;</li>
+ *   <li>the first unicast between two cells (other than a discovery reply or its withdrawal) starts
+ *       the handshake that sets their session up ({@code SecureTransport}, the security design
+ *       note's "The handshake"): four signed HELLOs, the first sent with that unicast, each of the
+ *       others when its sender takes the one before; the initiator has its session when it takes
+ *       the second, the other side when it takes the third. Each HELLO costs its sender a signature
+ *       and its receiver a verification; each side makes an X25519 key pair (when it sends or takes
+ *       the first HELLO) and agrees keys once (charged as agreements). A HELLO is not carried on
+ *       the simulated network: it is taken to arrive with the next datagram its receiver takes from
+ *       its sender (the acknowledgements that follow a first unicast at once), and its bytes go on
+ *       its sender's radio with that sender's next datagram;</li>
  *   <li>a {@code PolicyReply} of a policy its receiver loads (given by {@code loads}: the files of
  *       the role it takes, not the copies a manager keeps to serve the roles below it or a backup
  *       commander keeps of the mission) costs the parsing and loading of the text it carries, per
@@ -53,8 +65,11 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *       follows when one of the two sends the other something. A withdrawal of a discovery reply goes
  *       and is held the same way.</li>
  * </ul>
- * Vehicles are known by the sender field of the datagrams they send. Also counts the datagrams and
- * bytes sent (a broadcast once: one radio transmission). Deterministic: no clock, no randomness.
+ * The radio carries each datagram as long as the real one would be ({@link #airBytes}: the payload
+ * in its {@code SIGNED} or {@code PAIR_MAC} envelope, {@link WireSizes}), not the simulation's own
+ * seal, and the HELLOs beside them. Vehicles are known by the sender field of the datagrams they
+ * send. Also counts the datagrams and bytes sent as the real radio would (a broadcast once: one
+ * radio transmission; the HELLOs too). Deterministic: no clock, no randomness.
  */
 public final class CpuCharge implements CpuModel {
     private static final int TYPE_OFFSET = 3;
@@ -63,12 +78,21 @@ public final class CpuCharge implements CpuModel {
     /** Where the encoded message starts in a datagram on the network (after the transport's seal, if any). */
     private final int payloadOffset;
 
+    /** The seal round the payload on the simulated network, bytes: counter and tag, or none for bare messages. */
+    private final int sealBytes;
+    /** The mission the vehicles' credentials name (their length is in every signed datagram). */
+    private final String mission;
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
+    /** The handshakes between pairs of cells, by the pair's key. */
+    private final Map<Long, Handshake> handshakes = new HashMap<>();
+    /** The datagram {@link #sendMicros} was last asked about, and the bytes the radio sends for it. */
+    private byte[] lastSent;
+    private long lastAirBytes;
     private final BiPredicate<String, String> loads;
     private final BiPredicate<Address, byte[]> dropsUnverified;
     private final BiPredicate<Address, byte[]> holdsUnverified;
-    /** What is known of each address that sent or received: its number, vehicle and contacts. */
+    /** What is known of each address that sent or received: its number, vehicle and the credentials it verified. */
     private final Map<Address, Node> nodes = new HashMap<>();
     private final CpuLedger ledger = new CpuLedger();
     private long datagrams;
@@ -77,19 +101,21 @@ public final class CpuCharge implements CpuModel {
     /**
      * @param newUavPolicies how many {@code newUAV} policies the vehicle with this id runs
      * @param loads          whether the vehicle with this id (first) loads the policy of this URI (second)
+     * @param mission        the mission the vehicles' credentials name
      * @param payloadOffset  where the encoded message starts in a datagram as the network carries it:
      *                       {@code IdealAuthentication.PAYLOAD_OFFSET} on a team simulation's network
-     *                       (its seal comes first), 0 for bare messages
+     *                       (its seal comes first, {@code IdealAuthentication.SEAL_BYTES} in all),
+     *                       0 for bare messages
      */
-    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+    public CpuCharge(CpuCosts costs, String mission, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
                      int payloadOffset) {
-        this(costs, newUavPolicies, loads, payloadOffset, (at, data) -> false, (at, data) -> false);
+        this(costs, mission, newUavPolicies, loads, payloadOffset, (at, data) -> false, (at, data) -> false);
     }
 
     /** As the full constructor, with no cell holding datagrams unchecked. */
-    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+    public CpuCharge(CpuCosts costs, String mission, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
                      int payloadOffset, BiPredicate<Address, byte[]> dropsUnverified) {
-        this(costs, newUavPolicies, loads, payloadOffset, dropsUnverified, (at, data) -> false);
+        this(costs, mission, newUavPolicies, loads, payloadOffset, dropsUnverified, (at, data) -> false);
     }
 
     /**
@@ -101,15 +127,17 @@ public final class CpuCharge implements CpuModel {
      * @param holdsUnverified whether the cell at this address holds this datagram unchecked, to read
      *                        it first ({@code IdealAuthentication.holdsUnverified}); asked likewise
      */
-    public CpuCharge(CpuCosts costs, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
+    public CpuCharge(CpuCosts costs, String mission, ToIntFunction<String> newUavPolicies, BiPredicate<String, String> loads,
                      int payloadOffset, BiPredicate<Address, byte[]> dropsUnverified,
                      BiPredicate<Address, byte[]> holdsUnverified) {
+        this.mission = Objects.requireNonNull(mission, "mission");
         this.dropsUnverified = Objects.requireNonNull(dropsUnverified, "dropsUnverified");
         this.holdsUnverified = Objects.requireNonNull(holdsUnverified, "holdsUnverified");
         if (payloadOffset < 0) {
             throw new IllegalArgumentException("payload offset " + payloadOffset + " must be 0 or more");
         }
         this.payloadOffset = payloadOffset;
+        this.sealBytes = payloadOffset == 0 ? 0 : IdealAuthentication.SEAL_BYTES;
         this.costs = Objects.requireNonNull(costs, "costs");
         this.newUavPolicies = Objects.requireNonNull(newUavPolicies, "newUavPolicies");
         this.loads = Objects.requireNonNull(loads, "loads");
@@ -117,15 +145,13 @@ public final class CpuCharge implements CpuModel {
 
     @Override
     public long sendMicros(Address at, Address to, byte[] data) {
-        datagrams++;
-        bytes += data.length;
         Node node = node(at);
         if (node.vehicle == null) {
             node.vehicle = sender(data);
             ledger.name(node.number, node.vehicle);
         }
         int type = type(data);
-        ledger.sent(type, data.length);
+        int payload = Math.max(0, data.length - sealBytes);
         double ns = owed(node) + charge(node, Category.CODEC, codec(data.length));
         if (type == MessageType.POLICY_REPLY.code()) {
             PolicyText text = policyText(data);
@@ -133,18 +159,47 @@ public final class CpuCharge implements CpuModel {
                 ns += charge(node, Category.DEFLATE, costs.deflateNanosPerByte() * text.bytes());
             }
         }
+        long air;
         if (to == null) {
+            air = WireSizes.signed(node.vehicle, mission, payload);
             ns += charge(node, Category.SIGN, costs.signNanos());
-        } else if ((type == MessageType.DISCOVERY_REPLY.code() || type == MessageType.WITHDRAWAL.code())
-                && !node.met(node(to))) {
-            ns += charge(node, Category.SIGN, costs.signNanos()); // signed, no handshake: no contact yet
         } else {
-            ns += charge(node, Category.MAC, mac(data.length));
-            if (node.firstContact(node(to))) {
-                ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
+            Node peer = node(to);
+            Handshake h = handshake(node, peer);
+            if (h.hasSession(node)) {
+                air = WireSizes.pairMac(node.vehicle, payload);
+                ns += charge(node, Category.MAC, mac(data.length));
+            } else {
+                air = WireSizes.signed(node.vehicle, mission, payload);
+                ns += charge(node, Category.SIGN, costs.signNanos());
+                if (h.steps == 0 && type != MessageType.DISCOVERY_REPLY.code() && type != MessageType.WITHDRAWAL.code()) {
+                    // The first unicast that is not a discovery reply or its withdrawal starts the handshake.
+                    h.initiator = node.number;
+                    h.steps = 1;
+                    air += hello(node, peer);
+                    ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
+                }
             }
         }
+        air += node.owedAirBytes;
+        node.owedAirBytes = 0;
+        datagrams++;
+        bytes += air;
+        ledger.sent(type, air);
+        lastSent = data;
+        lastAirBytes = air;
         return micros(ns);
+    }
+
+    /**
+     * The bytes the real radio sends for {@code data}, the datagram {@link #sendMicros} was just asked
+     * about: the payload in the envelope its sender's security layer gives it ({@code SIGNED} with the
+     * credential, or {@code PAIR_MAC} under a session), and the HELLOs its sender sent since its last
+     * datagram or with this one; the simulation's seal is not sent.
+     */
+    @Override
+    public long airBytes(Address at, Address to, byte[] data) {
+        return data == lastSent ? lastAirBytes : data.length;
     }
 
     @Override
@@ -158,10 +213,17 @@ public final class CpuCharge implements CpuModel {
             ledger.heldUnverified(node.number, type(data));
             return micros(owed(node) + charge(node, Category.CODEC, codec(data.length)));
         }
-        double ns = owed(node) + charge(node, Category.CODEC, codec(data.length))
-                + (broadcast ? charge(node, Category.VERIFY, costs.verifyNanos()) : charge(node, Category.MAC, mac(data.length)));
-        if (node.firstContact(node(from))) {
-            ns += charge(node, Category.HANDSHAKE, costs.verifyNanos() + costs.agreeNanos());
+        Node sender = node(from);
+        double ns = owed(node) + charge(node, Category.CODEC, codec(data.length));
+        Handshake h = broadcast ? null : handshake(node, sender);
+        if (h != null && h.hasSession(sender)) {
+            ns += charge(node, Category.MAC, mac(data.length));
+        } else {
+            ns += charge(node, Category.VERIFY, costs.verifyNanos());
+            ns += credential(node, sender);
+        }
+        if (h != null) {
+            ns += takeHello(node, sender, h);
         }
         int type = type(data);
         ledger.received(node.number, type);
@@ -186,14 +248,71 @@ public final class CpuCharge implements CpuModel {
     }
 
     /**
-     * The cell at {@code at} checks now the datagram it held from {@code from}: a credential
-     * verification and a signature verification (a MAC if the two have met), charged, as part of the
-     * first contact, with the cell's next datagram sent or received.
+     * The HELLO {@code node} has from {@code sender}, if one came since its last datagram from it:
+     * taken (verified; the first makes {@code node} its key pair, the second and third agree keys and
+     * give the taker its session), and answered by the next (signed; its bytes go with
+     * {@code node}'s next datagram). The CPU it costs, ns.
+     */
+    private double takeHello(Node node, Node sender, Handshake h) {
+        boolean initiator = h.initiator == node.number;
+        boolean due = initiator ? h.steps == 2 || h.steps == 4 : h.steps == 1 || h.steps == 3;
+        if (!due) {
+            return 0;
+        }
+        double ns = costs.verifyNanos() + (h.steps == 4 ? 0 : costs.agreeNanos());
+        if (h.steps == 2) {
+            h.initiatorSession = true;
+        } else if (h.steps == 3) {
+            h.responderSession = true;
+        }
+        if (h.steps < 4) {
+            ns += costs.signNanos();
+            long length = hello(node, sender);
+            node.owedAirBytes += length;
+        }
+        h.steps++;
+        return charge(node, Category.HANDSHAKE, ns);
+    }
+
+    /** A HELLO from {@code node} to {@code peer}, counted as sent: its length. */
+    private long hello(Node node, Node peer) {
+        long length = WireSizes.hello(node.vehicle == null ? "" : node.vehicle, mission, peer.vehicle == null ? "" : peer.vehicle);
+        datagrams++;
+        bytes += length;
+        ledger.sentHello(length);
+        return length;
+    }
+
+    /** The verification of {@code sender}'s credential, the first time {@code node} takes a signed datagram from it. */
+    private double credential(Node node, Node sender) {
+        if (node.credentials.get(sender.number)) {
+            return 0;
+        }
+        node.credentials.set(sender.number);
+        return charge(node, Category.HANDSHAKE, costs.verifyNanos());
+    }
+
+    private Handshake handshake(Node a, Node b) {
+        long key = a.number < b.number ? (long) a.number << 32 | b.number : (long) b.number << 32 | a.number;
+        return handshakes.computeIfAbsent(key, k -> new Handshake());
+    }
+
+    /**
+     * The cell at {@code at} checks now the datagram it held from {@code from}: a signature
+     * verification, and the credential's if it had not verified that vehicle's yet (a MAC if the
+     * sender has a session with it), charged, as handshake work, with the cell's next datagram sent
+     * or received.
      */
     public void heldChecked(Address at, Address from) {
         Node node = node(at);
+        Node sender = node(from);
         ledger.heldChecked(node.number);
-        node.owedNanos += node.met(node(from)) ? costs.macNanos() : 2 * costs.verifyNanos();
+        if (handshake(node, sender).hasSession(sender)) {
+            node.owedNanos += costs.macNanos();
+        } else {
+            node.owedNanos += costs.verifyNanos() + (node.credentials.get(sender.number) ? 0 : costs.verifyNanos());
+            node.credentials.set(sender.number);
+        }
     }
 
     /** Charges {@code node} the work it did since its last datagram (checks of held ones), as handshake. */
@@ -324,11 +443,13 @@ public final class CpuCharge implements CpuModel {
     /** One address: a number of its own, the vehicle that sends from it (once it sent), and whom it has met. */
     private static final class Node {
         final int number;
-        /** The numbers of the nodes this one has sent to or received from. */
-        final BitSet contacts = new BitSet();
+        /** The numbers of the nodes whose credential this one has verified. */
+        final BitSet credentials = new BitSet();
         String vehicle;
         /** Work done since this node's last datagram, to be charged with its next. */
         double owedNanos;
+        /** HELLOs this node sent since its last datagram: their bytes go on its radio with its next. */
+        long owedAirBytes;
         /** The policy replies this node was charged for, by sender and message id. */
         final Set<String> policyCopies = new HashSet<>();
 
@@ -352,19 +473,21 @@ public final class CpuCharge implements CpuModel {
         boolean firstCopy(Address from, long id) {
             return policyCopies.add(from + "#" + id);
         }
+    }
 
-        /** Whether this node has sent to or received from {@code other} (other than held datagrams). */
-        boolean met(Node other) {
-            return contacts.get(other.number);
-        }
+    /**
+     * The handshake of two cells, as their security layers run it: how many of its four HELLOs have
+     * been sent (0: none, so no session), which of the two sent the first, and which has its session.
+     */
+    private static final class Handshake {
+        int steps;
+        int initiator = -1;
+        boolean initiatorSession;
+        boolean responderSession;
 
-        /** Records a contact with {@code other}; whether it is the first. */
-        boolean firstContact(Node other) {
-            if (contacts.get(other.number)) {
-                return false;
-            }
-            contacts.set(other.number);
-            return true;
+        /** Whether {@code node} has its session with the other of the two (it MACs what it sends). */
+        boolean hasSession(Node node) {
+            return node.number == initiator ? initiatorSession : steps > 0 && responderSession;
         }
     }
 

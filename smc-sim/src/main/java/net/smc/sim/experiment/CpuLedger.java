@@ -50,6 +50,8 @@ public final class CpuLedger {
     private final List<String> names = new ArrayList<>();
     private final long[] sentCount = new long[KINDS];
     private final long[] sentBytes = new long[KINDS];
+    private long hellos;
+    private long helloBytes;
 
     /** Adds {@code ns} of {@code category} to cell number {@code node} (numbered from 0 as first seen). */
     void charge(int node, Category category, double ns) {
@@ -57,11 +59,26 @@ public final class CpuLedger {
         nanos.get(node)[category.ordinal()] += ns;
     }
 
-    void sent(int type, int length) {
+    void sent(int type, long length) {
         if (type >= 0) {
             sentCount[type]++;
             sentBytes[type] += length;
         }
+    }
+
+    /** A step of a handshake (a security-layer HELLO, no message of the cells) of {@code length} bytes was sent. */
+    void sentHello(long length) {
+        hellos++;
+        helloBytes += length;
+    }
+
+    /** Handshake steps sent, and their bytes. */
+    public long hellos() {
+        return hellos;
+    }
+
+    public long helloBytes() {
+        return helloBytes;
     }
 
     void received(int node, int type) {
@@ -243,6 +260,9 @@ public final class CpuLedger {
         s.append("\nteam sent (datagrams/bytes):");
         Map<String, Long> bytes = sentBytesByKind();
         sentByKind().forEach((k, n) -> s.append(' ').append(k).append(' ').append(n).append('/').append(bytes.get(k)));
+        if (hellos > 0) {
+            s.append(" HELLO ").append(hellos).append('/').append(helloBytes);
+        }
         return s.append('\n').toString();
     }
 }

@@ -75,7 +75,7 @@ public final class SetupTimeRun {
         // A cell drops a discovery it would not answer before checking it: that costs no verification.
         // A manager holds discovery replies unchecked and checks those of the vehicles it tries to seat.
         IdealAuthentication auth = sim.idealAuthentication();
-        CpuCharge charge = new CpuCharge(costs, v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
+        CpuCharge charge = new CpuCharge(costs, mission.instanceName(), v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
                 IdealAuthentication.PAYLOAD_OFFSET, auth::dropsUnverified, auth::holdsUnverified);
         auth.onHeldChecked(charge::heldChecked);
         InMemoryNetwork network = sim.network();

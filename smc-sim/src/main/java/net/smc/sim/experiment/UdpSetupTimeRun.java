@@ -34,7 +34,8 @@ import net.smc.sim.team.SimVehicle;
  * cell listens when the commander first discovers. Nothing is charged or modelled: loopback has no
  * radio latency, and the cells share this machine's cores. The busiest cell's CPU time is that of
  * its thread (where datagrams are verified, decoded and acted on, and policies loaded) from its
- * start until the run was seen to end.
+ * cell's start (its boot policies loaded, as a simulated cell's are before its clock starts) until
+ * the run was seen to end.
  *
  * <pre>{@code
  * SetupResult r = UdpSetupTimeRun.run(generated, mission, Scheme.DISTRIBUTED, 1, seed, 60_000);
@@ -78,8 +79,11 @@ public final class UdpSetupTimeRun {
         List<CellHost> hosts = new ArrayList<>();
         try {
             int n = 0;
+            long[] startCpu = new long[team.size()];
             for (SimVehicle v : team) {
+                int at = n;
                 CellHost.Settings s = CellHost.settings(v.id(), mission, v.description(), repository)
+                        .beforeStart(c -> startCpu[at] = THREADS.getCurrentThreadCpuTime())
                         .udp(udp).commander(v.commander()).scheme(scheme).seed(seed * 1_000_003L + n++)
                         .security(ids.identity(v.id()), ids.trust()).trace(progress)
                         .wrap(t -> new CountingTransport(t, datagrams, bytes));
@@ -89,8 +93,9 @@ public final class UdpSetupTimeRun {
             while (!progress.complete() && System.nanoTime() < end) {
                 Thread.sleep(POLL_MILLIS);
             }
-            for (CellHost h : hosts) {
-                progress.cpu(h.call(THREADS::getCurrentThreadCpuTime));
+            for (int i = 0; i < hosts.size(); i++) {
+                long atStart = startCpu[i];
+                progress.cpu(hosts.get(i).call(() -> THREADS.getCurrentThreadCpuTime() - atStart));
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -48,4 +48,18 @@ public interface CpuModel {
      * @return microseconds, 0 or more
      */
     long receiveMicros(Address at, Address from, byte[] data, boolean broadcast);
+
+    /**
+     * The bytes node {@code at}'s radio transmits for {@code data}, asked right after
+     * {@link #sendMicros} for the same datagram when the network has a bandwidth: by default the
+     * datagram's length. A model of traffic the simulation does not carry byte for byte (the
+     * envelope a real security layer puts round each datagram, the handshakes it runs beside them)
+     * answers what the real radio would send.
+     *
+     * @param to the destination, or null for a broadcast
+     * @return bytes, 0 or more
+     */
+    default long airBytes(Address at, Address to, byte[] data) {
+        return data.length;
+    }
 }

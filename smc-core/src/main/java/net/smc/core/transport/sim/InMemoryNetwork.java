@@ -252,7 +252,7 @@ public final class InMemoryNetwork {
         NodeCpu node = sender.cpu != null ? sender.cpu : (sender.cpu = cpuOf(from));
         long now = scheduler.nowMillis() * 1_000;
         long ready = node.charge(now, cpu.sendMicros(from, to, data));
-        long out = node.transmit(ready, data.length, bytesPerSecond);
+        long out = bytesPerSecond == 0 ? ready : node.transmit(ready, cpu.airBytes(from, to, data), bytesPerSecond);
         node.lastDepartureMicros = Math.max(node.lastDepartureMicros, out);
         return floorMillis(out) - scheduler.nowMillis();
     }
