@@ -159,18 +159,22 @@ public final class CpuCharge implements CpuModel {
                 ns += charge(node, Category.DEFLATE, costs.deflateNanosPerByte() * text.bytes());
             }
         }
+        long message;
         long air;
         if (to == null) {
-            air = WireSizes.signed(node.vehicle, mission, payload);
+            message = WireSizes.signed(node.vehicle, mission, payload);
+            air = message;
             ns += charge(node, Category.SIGN, costs.signNanos());
         } else {
             Node peer = node(to);
             Handshake h = handshake(node, peer);
             if (h.hasSession(node)) {
-                air = WireSizes.pairMac(node.vehicle, payload);
+                message = WireSizes.pairMac(node.vehicle, payload);
+                air = message;
                 ns += charge(node, Category.MAC, mac(data.length));
             } else {
-                air = WireSizes.signed(node.vehicle, mission, payload);
+                message = WireSizes.signed(node.vehicle, mission, payload);
+                air = message;
                 ns += charge(node, Category.SIGN, costs.signNanos());
                 if (h.steps == 0 && type != MessageType.DISCOVERY_REPLY.code() && type != MessageType.WITHDRAWAL.code()) {
                     // The first unicast that is not a discovery reply or its withdrawal starts the handshake.
@@ -181,11 +185,11 @@ public final class CpuCharge implements CpuModel {
                 }
             }
         }
-        air += node.owedAirBytes;
-        node.owedAirBytes = 0;
         datagrams++;
-        bytes += air;
-        ledger.sent(type, air);
+        bytes += message;
+        ledger.sent(type, message);
+        air += node.owedAirBytes;    // HELLOs were counted as they were sent (hello)
+        node.owedAirBytes = 0;
         lastSent = data;
         lastAirBytes = air;
         return micros(ns);

@@ -19,11 +19,13 @@ import net.smc.core.message.MessageEncoder;
 import net.smc.core.message.PolicyReply;
 import net.smc.core.message.Withdrawal;
 import net.smc.core.security.IdealAuthentication;
+import net.smc.core.security.WireSizes;
 import net.smc.core.transport.Address;
 import net.smc.sim.experiment.CpuLedger.Category;
 
 class CpuChargeTest {
     private static final CpuCosts COSTS = new CpuCosts(60_000, 120_000, 90_000, 800, 4, 600, 3, 3_000, 500, 20, 5);
+    private static final String MISSION = "rescue";
     private final Address manager = Address.of("10.0.0.1", 7000);
     private final Address vehicle = Address.of("10.0.0.2", 7000);
 
@@ -64,7 +66,7 @@ class CpuChargeTest {
 
     @Test
     void onlyThePoliciesTheReceiverLoadsAreChargedTheirLoadingAFragmentedOneOnceInFull() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, CpuChargeTest::loads, IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, CpuChargeTest::loads, IdealAuthentication.PAYLOAD_OFFSET);
         introduce(charge, vehicle, "b0l1n0");
         introduce(charge, manager, "cdr");
         for (byte[] d : sealedPolicyReply("cdr", "policy:/roles/b0l2/mission", 300)) {
@@ -88,7 +90,7 @@ class CpuChargeTest {
      */
     @Test
     void aSecondCopyOfAReplyIsNeitherInflatedNorLoadedAgain() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, CpuChargeTest::loads, IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, CpuChargeTest::loads, IdealAuthentication.PAYLOAD_OFFSET);
         introduce(charge, vehicle, "b0l1n0");
         introduce(charge, manager, "cdr");
         String text = "p := root/factory/ecapolicy create. p event: /event/newUAV; active: true.\n".repeat(10);
@@ -123,7 +125,7 @@ class CpuChargeTest {
 
     @Test
     void aDeflatedReplyCostsItsSenderTheDeflatingAndItsReceiverTheInflating_perByteOfText() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> false, IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> false, IdealAuthentication.PAYLOAD_OFFSET);
         String text = "p := root/factory/ecapolicy create. p event: /event/newUAV; active: true.\n".repeat(10);
         byte[] reply = sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", text).get(0);
         assertTrue(reply.length < text.length() / 2, reply.length + " bytes on the wire for " + text.length());
@@ -140,7 +142,7 @@ class CpuChargeTest {
 
     @Test
     void aShortTextGoesAsItIs_andCostsNoCompression() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
         byte[] reply = sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", 63).get(0);
         charge.sendMicros(manager, vehicle, reply);
         charge.sendMicros(vehicle, manager, reply); // so that the charge knows the receiver's vehicle
@@ -149,7 +151,7 @@ class CpuChargeTest {
         assertFalse(charge.ledger().millisByCategory(1).containsKey(Category.INFLATE));
         assertEquals(COSTS.loadNanosPerByte() * 63 / 1e6, charge.ledger().millisByCategory(1).get(Category.POLICY_LOAD),
                 1e-9);
-        CpuCharge longer = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge longer = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
         longer.sendMicros(manager, vehicle, sealedPolicyReply("cdr", "policy:/roles/b0l1/mission", 64).get(0));
         assertEquals(COSTS.deflateNanosPerByte() * 64 / 1e6, longer.ledger().millisByCategory(0).get(Category.DEFLATE),
                 1e-9, "from 64 bytes the encoder deflates");
@@ -157,7 +159,7 @@ class CpuChargeTest {
 
     @Test
     void aSealedPolicyReplyIsChargedItsLoadingAndNamesItsSender() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
         byte[] reply = sealedPolicyReply("b0l1n0");
         charge.sendMicros(manager, vehicle, reply);
         charge.sendMicros(vehicle, manager, reply);
@@ -173,28 +175,103 @@ class CpuChargeTest {
 
     @Test
     void readAtTheWrongOffsetTheReplyIsNotRecognised() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, 0);
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, 0);
         byte[] reply = sealedPolicyReply("b0l1n0");
         charge.receiveMicros(vehicle, manager, reply, false);
         assertFalse(charge.ledger().millisByCategory(0).containsKey(Category.POLICY_LOAD));
     }
 
+    /** Unsigned, the receiver verifies a vehicle's credential once, with the first signed datagram it takes from it. */
     @Test
-    void firstContactIsAHandshakeOnceAndTheBusiestCellIsTheOneChargedMost() {
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
+    void aVehiclesCredentialIsVerifiedOnce_andTheBusiestCellIsTheOneChargedMost() {
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET);
         byte[] reply = sealedPolicyReply("b0l1n0");
         charge.receiveMicros(vehicle, manager, reply, false);
         charge.receiveMicros(vehicle, manager, reply, false);
-        double handshake = charge.ledger().millisByCategory(0).get(Category.HANDSHAKE);
-        assertEquals((COSTS.verifyNanos() + COSTS.agreeNanos()) / 1e6, handshake, 1e-9);
+        Map<Category, Double> taken = charge.ledger().millisByCategory(0);
+        assertEquals(COSTS.verifyNanos() / 1e6, taken.get(Category.HANDSHAKE), 1e-9, "the credential, once");
+        assertEquals(2 * COSTS.verifyNanos() / 1e6, taken.get(Category.VERIFY), 1e-9, "no session: both signed");
         assertEquals(0, charge.ledger().busiest());
+    }
+
+    /**
+     * The handshake as the security layer runs it: the first unicast goes signed with the first HELLO
+     * behind it; each side answers the HELLO it takes with the next; the initiator MACs from the
+     * second HELLO on, the other side from the third. The radio carries each datagram in its real
+     * envelope (not the simulation's seal) and each HELLO with its sender's next datagram.
+     */
+    @Test
+    void theHandshake_fourHellos_signedUntilEachSideHasItsSession_thenMacd() {
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> false, IdealAuthentication.PAYLOAD_OFFSET);
+        byte[] fromManager = sealedPolicyReply("b0l1n0", "policy:/roles/b0l2/mission", 100).get(0);
+        byte[] fromVehicle = sealedPolicyReply("b0l2n0", "policy:/roles/none/mission", 10).get(0);
+        int managerPayload = fromManager.length - IdealAuthentication.SEAL_BYTES;
+        int vehiclePayload = fromVehicle.length - IdealAuthentication.SEAL_BYTES;
+        int hello = WireSizes.hello("b0l1n0", MISSION, "b0l2n0");
+        assertEquals(hello, WireSizes.hello("b0l2n0", MISSION, "b0l1n0"), "names of the same length");
+        introduce(charge, vehicle, "b0l2n0");                          // node 0: the vehicle
+        long bytesBefore = charge.bytes();
+
+        charge.sendMicros(manager, vehicle, fromManager);              // node 1: signed, HELLO 1 with it
+        assertEquals(WireSizes.signed("b0l1n0", MISSION, managerPayload) + hello, charge.airBytes(manager, vehicle, fromManager));
+        Map<Category, Double> m = charge.ledger().millisByCategory(1);
+        assertEquals(COSTS.signNanos() / 1e6, m.get(Category.SIGN), 1e-9);
+        assertEquals((COSTS.signNanos() + COSTS.agreeNanos()) / 1e6, m.get(Category.HANDSHAKE), 1e-9, "HELLO 1 and a key pair");
+        assertFalse(m.containsKey(Category.MAC));
+
+        charge.receiveMicros(vehicle, manager, fromManager, false);    // takes HELLO 1, owes HELLO 2
+        Map<Category, Double> v = charge.ledger().millisByCategory(0);
+        assertEquals(COSTS.verifyNanos() / 1e6, v.get(Category.VERIFY), 1e-9);
+        assertEquals((COSTS.verifyNanos() + COSTS.verifyNanos() + COSTS.agreeNanos() + COSTS.signNanos()) / 1e6,
+                v.get(Category.HANDSHAKE), 1e-9, "the credential; HELLO 1 checked, a key pair, HELLO 2 signed");
+
+        charge.sendMicros(vehicle, manager, fromVehicle);              // still signed (no session), HELLO 2 on the radio
+        assertEquals(WireSizes.signed("b0l2n0", MISSION, vehiclePayload) + hello, charge.airBytes(vehicle, manager, fromVehicle));
+
+        charge.receiveMicros(manager, vehicle, fromVehicle, false);    // takes HELLO 2: the initiator's session
+        charge.sendMicros(manager, vehicle, fromManager);
+        assertEquals(WireSizes.pairMac("b0l1n0", managerPayload) + hello, charge.airBytes(manager, vehicle, fromManager),
+                "MAC'd now, HELLO 3 beside it");
+        assertEquals(COSTS.signNanos() / 1e6, charge.ledger().millisByCategory(1).get(Category.SIGN), 1e-9, "no second signature");
+
+        charge.receiveMicros(vehicle, manager, fromManager, false);    // MAC'd; takes HELLO 3: the vehicle's session
+        charge.sendMicros(vehicle, manager, fromVehicle);
+        assertEquals(WireSizes.pairMac("b0l2n0", vehiclePayload) + hello, charge.airBytes(vehicle, manager, fromVehicle),
+                "MAC'd, HELLO 4 beside it");
+        charge.receiveMicros(manager, vehicle, fromVehicle, false);    // takes HELLO 4: nothing more
+        charge.sendMicros(manager, vehicle, fromManager);
+        assertEquals(WireSizes.pairMac("b0l1n0", managerPayload), charge.airBytes(manager, vehicle, fromManager));
+
+        assertEquals(4, charge.ledger().hellos());
+        assertEquals(4L * hello, charge.ledger().helloBytes());
+        assertEquals(WireSizes.signed("b0l1n0", MISSION, managerPayload) + WireSizes.signed("b0l2n0", MISSION, vehiclePayload)
+                + 2 * WireSizes.pairMac("b0l1n0", managerPayload) + WireSizes.pairMac("b0l2n0", vehiclePayload) + 4L * hello,
+                charge.bytes() - bytesBefore, "what the radio carried, each HELLO once");
+        assertEquals(5 + 4, charge.datagrams() - 1, "five datagrams and four HELLOs, after the introduction");
+        assertEquals((2 * COSTS.macNanos() + COSTS.macNanosPerByte() * (fromManager.length + fromVehicle.length)) / 1e6,
+                charge.ledger().millisByCategory(0).get(Category.MAC), 1e-9,
+                "the vehicle MAC'd what it took and sent under the sessions, and nothing before");
+    }
+
+    /** A broadcast goes signed with the credential, and the radio does not carry the simulation's seal. */
+    @Test
+    void aBroadcastIsSignedOnTheRadio_withoutTheSimulationsSeal() {
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> false, IdealAuthentication.PAYLOAD_OFFSET);
+        byte[] data = sealedPolicyReply("b0l1n0", "policy:/roles/none/mission", 10).get(0);
+        charge.sendMicros(manager, null, data);
+        long air = WireSizes.signed("b0l1n0", MISSION, data.length - IdealAuthentication.SEAL_BYTES);
+        assertEquals(air, charge.airBytes(manager, null, data));
+        assertEquals(air, charge.bytes());
+        assertEquals(1, charge.datagrams());
+        assertEquals(0, charge.ledger().hellos(), "a broadcast starts no handshake");
+        assertEquals(data.length, charge.airBytes(manager, null, data.clone()), "a datagram it was not asked about: as long as it is");
     }
 
     @Test
     void aDatagramItsReceiverDropsUncheckedCostsItsDecodingOnlyAndIsNoContact() {
         byte[] reply = sealedPolicyReply("b0l1n0");
         boolean[] drops = {true};
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
                 (at, data) -> at.equals(vehicle) && data == reply && drops[0]);
         long micros = charge.receiveMicros(vehicle, manager, reply, true);
         CpuLedger ledger = charge.ledger();
@@ -207,8 +284,8 @@ class CpuChargeTest {
         charge.receiveMicros(vehicle, manager, reply, true);
         Map<Category, Double> checked = ledger.millisByCategory(0);
         assertEquals(COSTS.verifyNanos() / 1e6, checked.get(Category.VERIFY), 1e-9);
-        assertEquals((COSTS.verifyNanos() + COSTS.agreeNanos()) / 1e6, checked.get(Category.HANDSHAKE), 1e-9,
-                "the dropped datagram was no contact: the checked one is the first");
+        assertEquals(COSTS.verifyNanos() / 1e6, checked.get(Category.HANDSHAKE), 1e-9,
+                "the dropped datagram checked nothing: the credential is verified with the checked one");
         assertEquals(Map.of("POLICY_REPLY", 1L), ledger.droppedUnverifiedByKind(0));
     }
 
@@ -227,7 +304,7 @@ class CpuChargeTest {
     @Test
     void aHeldDiscoveryReplyCostsItsDecoding_itsCheckAndTheFirstContactComeOnlyWhenTheManagerContactsTheVehicle() {
         byte[] reply = sealedDiscoveryReply("b0l2n0");
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
                 (at, data) -> false, (at, data) -> at.equals(manager) && data == reply);
         introduce(charge, manager, "b0l1n0");                    // node 0
         charge.sendMicros(vehicle, manager, reply);              // node 1
@@ -258,7 +335,7 @@ class CpuChargeTest {
     void aWithdrawalToAManagerNotMetIsSignedAndStartsNoHandshake_heldItCostsItsDecoding() {
         byte[] message = new MessageEncoder().datagrams(new Envelope("b0l2n0", 8, new Withdrawal(3, "m"))).get(0);
         byte[] withdrawal = ByteBuffer.allocate(message.length + 16).putLong(43).put(message).putLong(99).array();
-        CpuCharge charge = new CpuCharge(COSTS, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
+        CpuCharge charge = new CpuCharge(COSTS, MISSION, v -> 0, (v, uri) -> true, IdealAuthentication.PAYLOAD_OFFSET,
                 (at, data) -> false, (at, data) -> at.equals(manager) && data == withdrawal);
         introduce(charge, manager, "b0l1n0");                    // node 0
         charge.sendMicros(vehicle, manager, withdrawal);         // node 1

@@ -43,7 +43,7 @@ class LevelLatencyTest {
 
     /** Datagrams delivered, by sending vehicle and message type. */
     private static final class Counts implements NetworkObserver {
-        final CpuCharge parse = new CpuCharge(CpuCosts.ZERO, v -> 0, (v, u) -> false, IdealAuthentication.PAYLOAD_OFFSET);
+        final CpuCharge parse = new CpuCharge(CpuCosts.ZERO, "m", v -> 0, (v, u) -> false, IdealAuthentication.PAYLOAD_OFFSET);
         final Map<String, Map<MessageType, Integer>> bySender = new HashMap<>();
         /** When a copy of each vehicle's first discovery broadcast arrived anywhere. */
         final Map<String, Long> firstDiscovery = new HashMap<>();
@@ -111,7 +111,7 @@ class LevelLatencyTest {
         // No jitter, so that the files do not overtake the assignment they follow.
         TeamSimulation sim = team(g, events, LinkProfile.fixed(3));
         CpuCosts slowLoading = new CpuCosts(0, 0, 0, 0, 0, 0, 0, 20_000, 0, 0, 0);
-        sim.network().setCpuModel(new CpuCharge(slowLoading, v -> g.newUavPolicies(v, Scheme.DISTRIBUTED), g::loadsPolicy,
+        sim.network().setCpuModel(new CpuCharge(slowLoading, "Generated" + ROLES, v -> g.newUavPolicies(v, Scheme.DISTRIBUTED), g::loadsPolicy,
                 IdealAuthentication.PAYLOAD_OFFSET));
         Counts counts = new Counts();
         sim.network().addObserver(counts);
@@ -191,7 +191,7 @@ class LevelLatencyTest {
             TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
                     .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(RadioNetwork.ADHOC_80211.link())
                     .listener(events::add).build();
-            sim.network().setCpuModel(new CpuCharge(FIG8_COSTS, v -> g.newUavPolicies(v, Scheme.DISTRIBUTED),
+            sim.network().setCpuModel(new CpuCharge(FIG8_COSTS, mission.instanceName(), v -> g.newUavPolicies(v, Scheme.DISTRIBUTED),
                     g::loadsPolicy, IdealAuthentication.PAYLOAD_OFFSET));
             sim.network().setBandwidth(RadioNetwork.ADHOC_80211.bytesPerSecond());
             Counts counts = new Counts();

@@ -117,7 +117,7 @@ class RoundTripTimingTest {
 
     /** When each cell broadcast a discovery, by its address. */
     private static final class Discoveries implements NetworkObserver {
-        final CpuCharge parse = new CpuCharge(CpuCosts.ZERO, v -> 0, (v, u) -> false, IdealAuthentication.PAYLOAD_OFFSET);
+        final CpuCharge parse = new CpuCharge(CpuCosts.ZERO, "m", v -> 0, (v, u) -> false, IdealAuthentication.PAYLOAD_OFFSET);
         final Map<Address, List<Long>> sent = new HashMap<>();
 
         @Override
