@@ -15,7 +15,8 @@ import java.util.Locale;
  * {@code --warm S} simulated seconds untimed (default 5), then {@code --steady S} timed (default 10).
  * Printed: simulated seconds per wall second and per CPU second of the simulation's thread, and the
  * steady-state traffic of the timed seconds: bytes and datagrams sent per vehicle per second (as
- * {@link ScaledTeam} counts them; simulated, so the same on any machine). Not a JMH benchmark; for
+ * {@link ScaledTeam} counts them, the bytes both as handed to the simulated network and in the real
+ * security envelopes, {@link ScaledTeam#wireBytes}; simulated, so the same on any machine). Not a JMH benchmark; for
  * comparing two builds back to back.
  * <pre>./gradlew :smc-sim:jmh -PjmhMain=net.smc.sim.bench.IdleCpuReport -PjmhArgs='10 100 1000 --steady 10'</pre>
  */
@@ -43,7 +44,7 @@ public final class IdleCpuReport {
         }
         threads.setThreadCpuTimeEnabled(true);
         System.out.println("vehicles,invariants,simulated_s,wall_s,cpu_s,simulated_per_wall_s,simulated_per_cpu_s,"
-                + "bytes_per_vehicle_s,datagrams_per_vehicle_s");
+                + "bytes_per_vehicle_s,wire_bytes_per_vehicle_s,datagrams_per_vehicle_s");
         for (int n : sizes) {
             for (boolean invariants : new boolean[] {true, false}) {
                 ScaledTeam team = new ScaledTeam(n, 1, invariants);
@@ -53,6 +54,7 @@ public final class IdleCpuReport {
                 }
                 team.sim.run(5_000 + warm * 1_000L);
                 long bytes0 = team.bytes();
+                long wire0 = team.wireBytes();
                 long datagrams0 = team.datagrams();
                 long cpu0 = threads.getCurrentThreadCpuTime();
                 long wall0 = System.nanoTime();
@@ -60,8 +62,9 @@ public final class IdleCpuReport {
                 double cpu = (threads.getCurrentThreadCpuTime() - cpu0) / 1e9;
                 double wall = (System.nanoTime() - wall0) / 1e9;
                 double vehicleSeconds = (double) n * steady;
-                System.out.printf(Locale.ROOT, "%d,%s,%d,%.3f,%.3f,%.2f,%.2f,%.1f,%.2f%n", n, invariants, steady, wall, cpu,
-                        steady / wall, steady / cpu, (team.bytes() - bytes0) / vehicleSeconds,
+                System.out.printf(Locale.ROOT, "%d,%s,%d,%.3f,%.3f,%.2f,%.2f,%.1f,%.1f,%.2f%n", n, invariants, steady, wall,
+                        cpu, steady / wall, steady / cpu, (team.bytes() - bytes0) / vehicleSeconds,
+                        (team.wireBytes() - wire0) / vehicleSeconds,
                         (team.datagrams() - datagrams0) / vehicleSeconds);
             }
         }

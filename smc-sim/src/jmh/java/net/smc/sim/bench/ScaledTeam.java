@@ -12,7 +12,11 @@ import java.util.function.Consumer;
 
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
+import java.nio.charset.StandardCharsets;
+
 import net.smc.core.mission.Mission;
+import net.smc.core.security.IdealAuthentication;
+import net.smc.core.security.WireSizes;
 import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.NetworkObserver;
@@ -58,6 +62,9 @@ final class ScaledTeam {
     private long bytes;
     private final long[] datagramsByType = new long[256];
     private final long[] bytesByType = new long[256];
+    /** The mission the vehicles' credentials name: its length is in every signed datagram. */
+    private final String missionName;
+    private long wireBytes;
 
     private record Loaded(GeneratedMission generated, Mission mission) {
     }
@@ -71,6 +78,7 @@ final class ScaledTeam {
     ScaledTeam(int size, long seed, boolean invariants) {
         this.size = size;
         Loaded m = MISSIONS.computeIfAbsent(size, ScaledTeam::load);
+        this.missionName = m.mission.instanceName();
         Consumer<CellEvent> progress = this::seen;
         this.sim = TeamSimulation.builder(m.mission, new PolicyRepository(m.generated.repository()), seed)
                 .vehicles(m.generated.vehicles()).listener(progress).invariantChecks(invariants).build();
@@ -119,6 +127,17 @@ final class ScaledTeam {
         return bytes;
     }
 
+    /**
+     * Bytes of those datagrams as a real radio carries them once the team has its sessions: each in
+     * the envelope the security layer gives it ({@link WireSizes}: {@code PAIR_MAC} for a unicast,
+     * {@code SIGNED} with the sender's credential for a broadcast), without the simulation's own
+     * seal. The handshakes of first contacts are not counted: for the steady state, where a vehicle
+     * has its sessions; during formation this counts low.
+     */
+    long wireBytes() {
+        return wireBytes;
+    }
+
     /** Datagrams sent so far of the frame type {@code code} ({@code MessageType} code, 0xFF a fragment). */
     long datagrams(int code) {
         return datagramsByType[code];
@@ -146,9 +165,21 @@ final class ScaledTeam {
         public void sent(long atMillis, Address from, Address to, byte[] data) {
             datagrams++;
             bytes += data.length;
+            wireBytes += wireLength(to, data);
             int type = typeOf(data);
             datagramsByType[type]++;
             bytesByType[type] += data.length;
+        }
+
+        /** {@code data}'s length in the envelope a real security layer gives it ({@link #wireBytes}). */
+        private long wireLength(Address to, byte[] data) {
+            boolean sealed = data.length >= IdealAuthentication.SEAL_BYTES + 5
+                    && data[IdealAuthentication.PAYLOAD_OFFSET] == 'S' && data[IdealAuthentication.PAYLOAD_OFFSET + 1] == 'M';
+            int at = sealed ? IdealAuthentication.PAYLOAD_OFFSET : 0;
+            int payload = sealed ? data.length - IdealAuthentication.SEAL_BYTES : data.length;
+            int n = data.length > at + 4 ? Math.min(data[at + 4] & 0xFF, data.length - at - 5) : 0;
+            String sender = new String(data, at + 5, Math.max(0, n), StandardCharsets.UTF_8);
+            return to == null ? WireSizes.signed(sender, missionName, payload) : WireSizes.pairMac(sender, payload);
         }
 
         /**

@@ -23,7 +23,9 @@ import org.openjdk.jmh.infra.BenchmarkParams;
  * cost. Secondary results (means over the iterations),
  * independent of the machine: {@code bytesPerVehicleSecond} and
  * {@code datagramsPerVehicleSecond}, what each vehicle sends in the steady state (heartbeats and
- * their answers; a broadcast counted once, payload bytes as the cells hand them to the network).
+ * their answers; a broadcast counted once, bytes as the cells hand them to the simulated network,
+ * sealed by its ideal authentication), and {@code wireBytesPerVehicleSecond}, the same datagrams
+ * in the envelopes the real security layer gives them (what a radio would carry).
  * Simulation speed during formation is {@link FormationBenchmark}'s {@code simulatedPerWall}.
  *
  * <pre>./gradlew :smc-sim:jmh -PjmhArgs='-wi 1 -i 3 SimulationSpeedBenchmark'</pre>
@@ -50,9 +52,12 @@ public class SimulationSpeedBenchmark {
     @AuxCounters(AuxCounters.Type.EVENTS)
     public static class Traffic {
         public double bytesPerVehicleSecond;
+        /** The same bytes in the envelopes a real security layer gives them ({@link ScaledTeam#wireBytes}). */
+        public double wireBytesPerVehicleSecond;
         public double datagramsPerVehicleSecond;
         long startMillis = -1;
         long startBytes;
+        long startWireBytes;
         long startDatagrams;
         private int iterations;
 
@@ -65,11 +70,13 @@ public class SimulationSpeedBenchmark {
             if (startMillis < 0) {
                 startMillis = team.sim.nowMillis();
                 startBytes = team.bytes();
+                startWireBytes = team.wireBytes();
                 startDatagrams = team.datagrams();
                 return;
             }
             double vehicleSeconds = team.size * (team.sim.nowMillis() - startMillis) / 1e3 * iterations;
             bytesPerVehicleSecond = (team.bytes() - startBytes) / vehicleSeconds;
+            wireBytesPerVehicleSecond = (team.wireBytes() - startWireBytes) / vehicleSeconds;
             datagramsPerVehicleSecond = (team.datagrams() - startDatagrams) / vehicleSeconds;
         }
 
