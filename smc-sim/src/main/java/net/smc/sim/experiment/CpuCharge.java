@@ -84,17 +84,17 @@ public final class CpuCharge implements CpuModel {
     private final String mission;
     private final CpuCosts costs;
     private final ToIntFunction<String> newUavPolicies;
-    /** The handshakes between pairs of cells, by the pair's key. */
-    private final Map<Long, Handshake> handshakes = new HashMap<>();
-    /** The datagram {@link #sendMicros} was last asked about, and the bytes the radio sends for it. */
-    private byte[] lastSent;
-    private long lastAirBytes;
     private final BiPredicate<String, String> loads;
     private final BiPredicate<Address, byte[]> dropsUnverified;
     private final BiPredicate<Address, byte[]> holdsUnverified;
     /** What is known of each address that sent or received: its number, vehicle and the credentials it verified. */
     private final Map<Address, Node> nodes = new HashMap<>();
     private final CpuLedger ledger = new CpuLedger();
+    /** The handshakes between pairs of cells, by the pair's key ({@link #handshake}). */
+    private final Map<Long, Handshake> handshakes = new HashMap<>();
+    /** The datagram {@link #sendMicros} was last asked about, and the bytes the radio sends for it. */
+    private byte[] lastSent;
+    private long lastAirBytes;
     private long datagrams;
     private long bytes;
 
@@ -160,38 +160,30 @@ public final class CpuCharge implements CpuModel {
             }
         }
         long message;
-        long air;
-        if (to == null) {
-            message = WireSizes.signed(node.vehicle, mission, payload);
-            air = message;
-            ns += charge(node, Category.SIGN, costs.signNanos());
+        long hellos = node.owedAirBytes;   // sent since this node's last datagram; counted then (hello)
+        node.owedAirBytes = 0;
+        Node peer = to == null ? null : node(to);
+        Handshake h = peer == null ? null : handshake(node, peer);
+        if (h != null && h.hasSession(node)) {
+            message = WireSizes.pairMac(node.vehicle, payload);
+            ns += charge(node, Category.MAC, mac(data.length));
         } else {
-            Node peer = node(to);
-            Handshake h = handshake(node, peer);
-            if (h.hasSession(node)) {
-                message = WireSizes.pairMac(node.vehicle, payload);
-                air = message;
-                ns += charge(node, Category.MAC, mac(data.length));
-            } else {
-                message = WireSizes.signed(node.vehicle, mission, payload);
-                air = message;
-                ns += charge(node, Category.SIGN, costs.signNanos());
-                if (h.steps == 0 && type != MessageType.DISCOVERY_REPLY.code() && type != MessageType.WITHDRAWAL.code()) {
-                    // The first unicast that is not a discovery reply or its withdrawal starts the handshake.
-                    h.initiator = node.number;
-                    h.steps = 1;
-                    air += hello(node, peer);
-                    ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
-                }
+            message = WireSizes.signed(node.vehicle, mission, payload);
+            ns += charge(node, Category.SIGN, costs.signNanos());
+            if (h != null && h.steps == 0 && type != MessageType.DISCOVERY_REPLY.code()
+                    && type != MessageType.WITHDRAWAL.code()) {
+                // The first unicast that is not a discovery reply or its withdrawal starts the handshake.
+                h.initiator = node.number;
+                h.steps = 1;
+                hellos += hello(node, peer);
+                ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
             }
         }
         datagrams++;
         bytes += message;
         ledger.sent(type, message);
-        air += node.owedAirBytes;    // HELLOs were counted as they were sent (hello)
-        node.owedAirBytes = 0;
         lastSent = data;
-        lastAirBytes = air;
+        lastAirBytes = message + hellos;
         return micros(ns);
     }
 
@@ -444,7 +436,7 @@ public final class CpuCharge implements CpuModel {
         return n;
     }
 
-    /** One address: a number of its own, the vehicle that sends from it (once it sent), and whom it has met. */
+    /** One address: a number of its own, the vehicle that sends from it (once it sent), and the credentials it verified. */
     private static final class Node {
         final int number;
         /** The numbers of the nodes whose credential this one has verified. */
