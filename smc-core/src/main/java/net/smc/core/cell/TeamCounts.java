@@ -34,8 +34,13 @@ final class TeamCounts {
     static Map<String, Integer> subtreeCounts(Slots slots, List<Seat> own, Collection<Child> children) {
         Map<String, Integer> counts = slots.count(own);
         for (Child c : children) {
-            Map<String, Integer> sub = c.subtree != null ? c.subtree : slots.count(c.seats);
-            sub.forEach((role, n) -> counts.merge(role, n, Integer::sum));
+            if (c.subtree != null) {
+                c.subtree.forEach((role, n) -> counts.merge(role, n, Integer::sum));
+            } else {
+                // A child's own seats, merged one by one: a map of every role of the mission per child
+                // made a commander of a thousand children and roles do a million merges a tick.
+                c.seats.forEach(s -> counts.merge(s.role(), 1, Integer::sum));
+            }
         }
         return counts;
     }
