@@ -34,7 +34,8 @@ import net.smc.sim.experiment.CpuLedger.Category;
  *       others when its sender takes the one before; the initiator has its session when it takes
  *       the second, the other side when it takes the third. Each HELLO costs its sender a signature
  *       and its receiver a verification; each side makes an X25519 key pair (when it sends or takes
- *       the first HELLO) and agrees keys once (charged as agreements). A HELLO is not carried on
+ *       the first HELLO) and agrees keys once, together one {@code agreeNanos} (which
+ *       {@link Calibration} times as both), half charged at each. A HELLO is not carried on
  *       the simulated network: it is taken to arrive with the next datagram its receiver takes from
  *       its sender (the acknowledgements that follow a first unicast at once), and its bytes go on
  *       its sender's radio with that sender's next datagram;</li>
@@ -176,7 +177,7 @@ public final class CpuCharge implements CpuModel {
                 h.initiator = node.number;
                 h.steps = 1;
                 hellos += hello(node, peer);
-                ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos());
+                ns += charge(node, Category.HANDSHAKE, costs.signNanos() + costs.agreeNanos() / 2);   // HELLO 1, a key pair
             }
         }
         datagrams++;
@@ -246,7 +247,7 @@ public final class CpuCharge implements CpuModel {
     /**
      * The HELLO {@code node} has from {@code sender}, if one came since its last datagram from it:
      * taken (verified; the first makes {@code node} its key pair, the second and third agree keys and
-     * give the taker its session), and answered by the next (signed; its bytes go with
+     * give the taker its session: half an {@code agreeNanos} each), and answered by the next (signed; its bytes go with
      * {@code node}'s next datagram). The CPU it costs, ns.
      */
     private double takeHello(Node node, Node sender, Handshake h) {
@@ -255,7 +256,8 @@ public final class CpuCharge implements CpuModel {
         if (!due) {
             return 0;
         }
-        double ns = costs.verifyNanos() + (h.steps == 4 ? 0 : costs.agreeNanos());
+        // HELLO 1 taken: a key pair; HELLO 2 or 3 taken: the agreement (agreeNanos is both, Calibration).
+        double ns = costs.verifyNanos() + (h.steps == 4 ? 0 : costs.agreeNanos() / 2);
         if (h.steps == 2) {
             h.initiatorSession = true;
         } else if (h.steps == 3) {

@@ -216,13 +216,14 @@ class CpuChargeTest {
         assertEquals(WireSizes.signed("b0l1n0", MISSION, managerPayload) + hello, charge.airBytes(manager, vehicle, fromManager));
         Map<Category, Double> m = charge.ledger().millisByCategory(1);
         assertEquals(COSTS.signNanos() / 1e6, m.get(Category.SIGN), 1e-9);
-        assertEquals((COSTS.signNanos() + COSTS.agreeNanos()) / 1e6, m.get(Category.HANDSHAKE), 1e-9, "HELLO 1 and a key pair");
+        assertEquals((COSTS.signNanos() + COSTS.agreeNanos() / 2) / 1e6, m.get(Category.HANDSHAKE), 1e-9,
+                "HELLO 1 and a key pair (half of agreeNanos, which times a key pair and an agreement)");
         assertFalse(m.containsKey(Category.MAC));
 
         charge.receiveMicros(vehicle, manager, fromManager, false);    // takes HELLO 1, owes HELLO 2
         Map<Category, Double> v = charge.ledger().millisByCategory(0);
         assertEquals(COSTS.verifyNanos() / 1e6, v.get(Category.VERIFY), 1e-9);
-        assertEquals((COSTS.verifyNanos() + COSTS.verifyNanos() + COSTS.agreeNanos() + COSTS.signNanos()) / 1e6,
+        assertEquals((COSTS.verifyNanos() + COSTS.verifyNanos() + COSTS.agreeNanos() / 2 + COSTS.signNanos()) / 1e6,
                 v.get(Category.HANDSHAKE), 1e-9, "the credential; HELLO 1 checked, a key pair, HELLO 2 signed");
 
         charge.sendMicros(vehicle, manager, fromVehicle);              // still signed (no session), HELLO 2 on the radio
@@ -242,6 +243,11 @@ class CpuChargeTest {
         charge.sendMicros(manager, vehicle, fromManager);
         assertEquals(WireSizes.pairMac("b0l1n0", managerPayload), charge.airBytes(manager, vehicle, fromManager));
 
+        // Each side: its own credential check of the other, two HELLOs signed, two checked besides the
+        // signed datagram's, and one key pair and agreement (one agreeNanos) in all.
+        double eachSide = 2 * COSTS.signNanos() + 3 * COSTS.verifyNanos() + COSTS.agreeNanos();
+        assertEquals(eachSide / 1e6, charge.ledger().millisByCategory(1).get(Category.HANDSHAKE), 1e-9, "the manager");
+        assertEquals(eachSide / 1e6, charge.ledger().millisByCategory(0).get(Category.HANDSHAKE), 1e-9, "the vehicle");
         assertEquals(4, charge.ledger().hellos());
         assertEquals(4L * hello, charge.ledger().helloBytes());
         assertEquals(WireSizes.signed("b0l1n0", MISSION, managerPayload) + WireSizes.signed("b0l2n0", MISSION, vehiclePayload)
@@ -325,9 +331,9 @@ class CpuChargeTest {
         assertEquals(1, ledger.heldCheckedCount(0));
         byte[] assignment = sealedPolicyReply("b0l1n0");
         charge.sendMicros(manager, vehicle, assignment);
-        assertEquals((2 * COSTS.verifyNanos() + COSTS.signNanos() + COSTS.agreeNanos()) / 1e6,
+        assertEquals((2 * COSTS.verifyNanos() + COSTS.signNanos() + COSTS.agreeNanos() / 2) / 1e6,
                 ledger.millisByCategory(0).get(Category.HANDSHAKE), 1e-9,
-                "the held reply's check (credential and signature), then the first contact's signature and agreement");
+                "the held reply's check (credential and signature), then HELLO 1's signature and a key pair");
     }
 
     /** A withdrawal of a discovery reply goes as the reply does: signed, no handshake, held unchecked by its receiver. */
