@@ -6,13 +6,17 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import net.smc.sim.experiment.MissionGenerator;
+
 /**
  * The idle team of {@link SimulationSpeedBenchmark}, timed by the CPU the simulation's thread uses
  * as well as by the wall clock: on a machine shared with other work, wall time says as much about
  * the neighbours as about the simulation, while the thread's CPU time (read from
  * {@link ThreadMXBean}) moves much less. For each size given (default 10 100 1000) and with the
  * invariant checks on and off: a {@link ScaledTeam} is formed, settles for 5 simulated seconds, runs
- * {@code --warm S} simulated seconds untimed (default 5), then {@code --steady S} timed (default 10).
+ * {@code --warm S} simulated seconds untimed (default 5), then {@code --steady S} timed (default 10);
+ * {@code --com-timeout MS} gives the missions that heartbeat period instead of
+ * {@link MissionGenerator#COM_TIMEOUT_MILLIS} (the failure timeout six of it).
  * Printed: simulated seconds per wall second and per CPU second of the simulation's thread, and the
  * steady-state traffic of the timed seconds: bytes and datagrams sent per vehicle per second (as
  * {@link ScaledTeam} counts them, the bytes both as handed to the simulated network and in the real
@@ -28,10 +32,12 @@ public final class IdleCpuReport {
         List<Integer> sizes = new ArrayList<>();
         int steady = 10;
         int warm = 5;
+        long comTimeout = MissionGenerator.COM_TIMEOUT_MILLIS;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--steady" -> steady = Integer.parseInt(args[++i]);
                 case "--warm" -> warm = Integer.parseInt(args[++i]);
+                case "--com-timeout" -> comTimeout = Long.parseLong(args[++i]);
                 default -> sizes.add(Integer.parseInt(args[i]));
             }
         }
@@ -47,7 +53,7 @@ public final class IdleCpuReport {
                 + "bytes_per_vehicle_s,wire_bytes_per_vehicle_s,datagrams_per_vehicle_s");
         for (int n : sizes) {
             for (boolean invariants : new boolean[] {true, false}) {
-                ScaledTeam team = new ScaledTeam(n, 1, invariants);
+                ScaledTeam team = new ScaledTeam(n, 1, invariants, comTimeout);
                 if (!team.form()) {
                     throw new IllegalStateException(n + " vehicles did not form within "
                             + ScaledTeam.FORMATION_LIMIT_MILLIS + " simulated ms");

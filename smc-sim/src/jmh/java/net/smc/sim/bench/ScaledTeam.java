@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -51,7 +52,8 @@ final class ScaledTeam {
     /** The longest formation waited for, in simulated ms. */
     static final long FORMATION_LIMIT_MILLIS = 600_000;
 
-    private static final Map<Integer, Loaded> MISSIONS = new ConcurrentHashMap<>();
+    /** The generated missions, by size and {@code comTimeout}. */
+    private static final Map<List<Long>, Loaded> MISSIONS = new ConcurrentHashMap<>();
 
     final int size;
     final TeamSimulation sim;
@@ -76,8 +78,16 @@ final class ScaledTeam {
 
     /** @param invariants whether the harness checks the team's invariants every 50 ms (off: the cells' own cost) */
     ScaledTeam(int size, long seed, boolean invariants) {
+        this(size, seed, invariants, MissionGenerator.COM_TIMEOUT_MILLIS);
+    }
+
+    /**
+     * @param invariants       whether the harness checks the team's invariants every 50 ms
+     * @param comTimeoutMillis the mission's {@code comTimeout}, its heartbeat period ({@code failureTimeout} six of it)
+     */
+    ScaledTeam(int size, long seed, boolean invariants, long comTimeoutMillis) {
         this.size = size;
-        Loaded m = MISSIONS.computeIfAbsent(size, ScaledTeam::load);
+        Loaded m = MISSIONS.computeIfAbsent(List.of((long) size, comTimeoutMillis), k -> load(size, comTimeoutMillis));
         this.missionName = m.mission.instanceName();
         Consumer<CellEvent> progress = this::seen;
         this.sim = TeamSimulation.builder(m.mission, new PolicyRepository(m.generated.repository()), seed)
@@ -196,12 +206,12 @@ final class ScaledTeam {
         }
     }
 
-    private static Loaded load(int size) {
+    private static Loaded load(int size, long comTimeoutMillis) {
         try {
             Path project = projectDirectory();
             Path dir = Files.createTempDirectory("smc-scale-" + size + "-");
             GeneratedMission g = MissionGenerator.write(TreeShape.of(size, DEPTH), dir,
-                    project.resolve("policies/boot/events.p2"));
+                    project.resolve("policies/boot/events.p2"), comTimeoutMillis);
             Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
             return new Loaded(g, mission);
         } catch (IOException e) {

@@ -39,6 +39,9 @@ public final class MissionGenerator {
     private MissionGenerator() {
     }
 
+    /** The generated missions' {@code comTimeout} (heartbeat period), ms; {@code failureTimeout} is six of it. */
+    public static final long COM_TIMEOUT_MILLIS = 500;
+
     /**
      * Writes the mission of {@code shape} into {@code directory} (created if missing; files of an
      * earlier mission there are overwritten).
@@ -47,7 +50,22 @@ public final class MissionGenerator {
      *                   into the generated repository
      */
     public static GeneratedMission write(TreeShape shape, Path directory, Path bootEvents) throws IOException {
+        return write(shape, directory, bootEvents, COM_TIMEOUT_MILLIS);
+    }
+
+    /**
+     * As {@link #write(TreeShape, Path, Path)}, with the mission parameter {@code comTimeout} (the
+     * heartbeat period) {@code comTimeoutMillis} instead of {@value #COM_TIMEOUT_MILLIS}, and
+     * {@code failureTimeout} six of it, as by default.
+     *
+     * @throws IllegalArgumentException when {@code comTimeoutMillis} is not from 1 to 60,000
+     */
+    public static GeneratedMission write(TreeShape shape, Path directory, Path bootEvents, long comTimeoutMillis)
+            throws IOException {
         Objects.requireNonNull(shape, "shape");
+        if (comTimeoutMillis < 1 || comTimeoutMillis > 60_000) {
+            throw new IllegalArgumentException("comTimeout " + comTimeoutMillis + " ms must be from 1 to 60000");
+        }
         if (!Files.isRegularFile(bootEvents)) {
             throw new IllegalArgumentException("boot policy file " + bootEvents + " does not exist; it must be the project's "
                     + "policies/boot/events.p2");
@@ -59,7 +77,7 @@ public final class MissionGenerator {
         Files.createDirectories(mission.classFile().getParent());
         Files.writeString(mission.classFile(), classXml(mission));
         for (Scheme scheme : Scheme.values()) {
-            Files.writeString(mission.instanceFile(scheme), instanceXml(mission, scheme));
+            Files.writeString(mission.instanceFile(scheme), instanceXml(mission, scheme, comTimeoutMillis));
             write(policies.resolve("roles/commander/" + schemeName(scheme) + ".p2"),
                     managerMission("commander", mission.managedBy("commander", scheme)));
         }
@@ -134,14 +152,15 @@ public final class MissionGenerator {
         x.append("  </").append(name).append("Behaviour>\n");
     }
 
-    private static String instanceXml(GeneratedMission m, Scheme scheme) {
+    private static String instanceXml(GeneratedMission m, Scheme scheme, long comTimeoutMillis) {
         String s = schemeName(scheme);
         StringBuilder x = new StringBuilder(HEADER);
         x.append("<xml>\n  <missionInstanceParameters>\n    <missionInstanceName>Generated").append(m.seats())
                 .append(scheme == Scheme.CENTRALISED ? "Flat" : "").append("</missionInstanceName>\n")
                 .append("    <missionClass href=\"generated.class.xml\">Generated</missionClass>\n")
                 .append("  </missionInstanceParameters>\n  <missionParameters>\n")
-                .append("    <comTimeout>500</comTimeout>\n    <failureTimeout>3000</failureTimeout>\n")
+                .append("    <comTimeout>").append(comTimeoutMillis).append("</comTimeout>\n    <failureTimeout>")
+                .append(6 * comTimeoutMillis).append("</failureTimeout>\n")
                 .append("    <scheme>").append(s).append("</scheme>\n    <backups>1</backups>\n")
                 .append("  </missionParameters>\n");
         x.append("  <commander>\n    <policy>policy:/roles/commander/").append(s).append("</policy>\n")

@@ -23,6 +23,24 @@ class MissionGeneratorTest {
     @TempDir
     Path dir;
 
+    /** A heartbeat period given replaces the default, with the failure timeout six of it, in both schemes. */
+    @Test
+    void comTimeout_isTheMissionsHeartbeatPeriod_andTheFailureTimeoutSixOfIt() throws Exception {
+        GeneratedMission g = MissionGenerator.write(TreeShape.of(10, 4), dir, Project.bootEvents(), 750);
+        MissionLoader loader = new MissionLoader(new PolicyRepository(g.repository()));
+        for (Scheme scheme : Scheme.values()) {
+            net.smc.core.cell.Timing timing = net.smc.core.cell.Timing.of(loader.load(g.instanceFile(scheme)));
+            assertEquals(750, timing.comTimeoutMillis());
+            assertEquals(4_500, timing.failureTimeoutMillis());
+        }
+        GeneratedMission byDefault = MissionGenerator.write(TreeShape.of(10, 4), dir.resolve("d"), Project.bootEvents());
+        assertEquals(MissionGenerator.COM_TIMEOUT_MILLIS, net.smc.core.cell.Timing.of(new MissionLoader(
+                new PolicyRepository(byDefault.repository())).load(byDefault.instanceFile(Scheme.DISTRIBUTED))).comTimeoutMillis());
+        IllegalArgumentException zero = assertThrows(IllegalArgumentException.class,
+                () -> MissionGenerator.write(TreeShape.of(10, 4), dir.resolve("z"), Project.bootEvents(), 0));
+        assertTrue(zero.getMessage().contains("comTimeout 0 ms must be from 1 to 60000"), zero.getMessage());
+    }
+
     @ParameterizedTest(name = "{0} roles, depth {1}")
     @CsvSource({"5, 4", "20, 4", "100, 4", "1000, 4", "2000, 4", "7, 2", "50, 3", "300, 6"})
     void generatedMission_loadsInBothSchemes_withOneSeatPerRole(int roles, int depth) throws Exception {
