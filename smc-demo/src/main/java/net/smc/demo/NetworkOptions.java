@@ -19,7 +19,7 @@ final class NetworkOptions {
 
     @Option(names = "--network", paramLabel = "MODEL", defaultValue = "adhoc", description = {"The network model of "
             + "the simulated runs: 'adhoc' (an 802.11 ad-hoc radio network: 2 hops of 2 ms + up to 2 ms, 2.75 Mbit/s per "
-            + "sender, 1% loss) or 'lan' (one switched Ethernet, as the paper's testbed of Linux machines: 1 hop of up to "
+            + "sender, 1%% loss) or 'lan' (one switched Ethernet, as the paper's testbed of Linux machines: 1 hop of up to "
             + "1 ms, 100 Mbit/s, no loss); the options below replace its figures (default: ${DEFAULT-VALUE})."})
     String network;
 

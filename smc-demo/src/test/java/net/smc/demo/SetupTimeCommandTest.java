@@ -175,6 +175,23 @@ class SetupTimeCommandTest {
                 lossy.out());
     }
 
+    /** The help formats every description: a bare '%' in one made picocli warn on stderr and print it raw. */
+    @Test
+    void help_describesTheNetworkModels_withoutAFormatWarning() {
+        java.io.PrintStream before = System.err;
+        java.io.ByteArrayOutputStream caught = new java.io.ByteArrayOutputStream();
+        System.setErr(new java.io.PrintStream(caught, true));
+        Smc.Result r;
+        try {
+            r = Smc.in(dir).run("experiment", "setup-time", "--help");
+        } finally {
+            System.setErr(before);
+        }
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("1% loss"), r.out());
+        assertTrue(!caught.toString().contains("picocli WARN"), caught.toString());
+    }
+
     @Test
     void unknownNetwork_isAUsageErrorNamingTheModels() {
         Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--network", "wifi", "--out", "o");
