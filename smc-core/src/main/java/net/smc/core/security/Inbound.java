@@ -24,7 +24,7 @@ final class Inbound {
         long now = e.clock.nowMillis();
         Frame frame;
         try {
-            frame = FrameCodec.read(datagram);
+            frame = FrameCodec.read(datagram, e.referenceCounter());
         } catch (Malformed m) {
             return reject(Rejection.MALFORMED, null, m.getMessage());
         }
@@ -123,7 +123,7 @@ final class Inbound {
         if (session == null) {
             return reject(Rejection.UNKNOWN_SENDER, k.sender(), describe(k) + ": no session with this sender; it must shake hands first");
         }
-        if (!session.receiveMac.verify(k.datagram(), k.bodyEnd())) {
+        if (!session.receiveMac.verify(k.counter(), k.datagram(), k.bodyEnd())) {
             return reject(Rejection.BAD_MAC, k.sender(), describe(k) + ": the MAC does not verify under the session key");
         }
         Unwrapped refused = checkPeerAndTime(k, session.window, now);
@@ -141,7 +141,7 @@ final class Inbound {
             return reject(Rejection.NO_TEAM_KEY, k.sender(), describe(k) + ": under team key " + Integer.toHexString(k.teamId()) + ", but '"
                     + e.id() + "' holds " + (team == null ? "no team key" : "team key " + Integer.toHexString(team.id)));
         }
-        if (!team.mac.verify(k.datagram(), k.bodyEnd())) {
+        if (!team.mac.verify(k.counter(), k.datagram(), k.bodyEnd())) {
             return reject(Rejection.BAD_MAC, k.sender(), describe(k) + ": the MAC does not verify under the team key");
         }
         if (k.sender().equals(e.id())) {
@@ -195,7 +195,8 @@ final class Inbound {
         if (status != CredentialStatus.VALID) {
             return rejectCredential(status, sender, who, credential, now);
         }
-        if (!credential.vehicleKey().verify(datagram, 0, signedLength, datagram, signedLength)) {
+        byte[] signedBytes = FrameCodec.toBeSigned(frame.counter(), datagram, signedLength);
+        if (!credential.vehicleKey().verify(signedBytes, 0, signedBytes.length, datagram, signedLength)) {
             return reject(Rejection.BAD_SIGNATURE, sender, who + ": the signature does not verify with the key of its credential");
         }
         return checkTime(frame, known == null ? null : known.signedWindow, now, sender, who);

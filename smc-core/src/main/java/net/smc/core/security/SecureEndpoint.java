@@ -23,8 +23,8 @@ import net.smc.core.transport.Transport;
  *       ({@link #startHandshake}) sets up: every unicast after that, heartbeats included;</li>
  *   <li>{@link #wrapTeam}: an HMAC under the team key a commander hands out ({@link #wrapTeamKey}).</li>
  * </ul>
- * Every envelope carries the sender's clock and a counter; a receiver refuses what is stale or
- * repeated. A refused datagram is counted under its {@link Rejection} and changes nothing else.
+ * Every envelope carries the sender's counter, which follows its clock; a receiver refuses what is
+ * stale or repeated. A refused datagram is counted under its {@link Rejection} and changes nothing else.
  *
  * <pre>{@code
  * SecureEndpoint a = SecureEndpoint.builder(identityA, trust, clock).build();
@@ -39,6 +39,8 @@ import net.smc.core.transport.Transport;
  * <p>Not thread-safe: it belongs to its cell's thread, as everything a cell owns does.
  */
 public final class SecureEndpoint {
+    /** A counter follows the clock shifted left by this many bits (see {@link #nextCounter}). */
+    static final int COUNTER_SHIFT = 20;
     private static final int PRUNE_ABOVE = 1024;
 
     final SigningIdentity identity;
@@ -96,8 +98,9 @@ public final class SecureEndpoint {
      */
     public byte[] wrapSigned(byte[] payload) {
         fits(Protection.SIGNED, payload);
-        byte[] datagram = FrameCodec.signed(credentialBytes, clock.nowMillis(), nextCounter(), payload);
-        sign(datagram);
+        long ctr = nextCounter();
+        byte[] datagram = FrameCodec.signed(credentialBytes, ctr, payload);
+        sign(ctr, datagram);
         stats.signedWrapped++;
         return datagram;
     }
@@ -111,8 +114,9 @@ public final class SecureEndpoint {
     public byte[] wrapFor(String peer, byte[] payload) {
         Session session = sessionWith(peer, "wrap a payload for it");
         fits(Protection.PAIR_MAC, payload);
-        byte[] datagram = FrameCodec.keyed(FrameCodec.PAIR_MAC, 0, idBytes, clock.nowMillis(), nextCounter(), payload, FrameCodec.MAC);
-        session.sendMac.sign(datagram, datagram.length - FrameCodec.MAC);
+        long ctr = nextCounter();
+        byte[] datagram = FrameCodec.keyed(FrameCodec.PAIR_MAC, 0, idBytes, ctr, payload, FrameCodec.MAC);
+        session.sendMac.sign(ctr, datagram, datagram.length - FrameCodec.MAC);
         stats.pairWrapped++;
         return datagram;
     }
@@ -128,8 +132,9 @@ public final class SecureEndpoint {
             throw new IllegalStateException("'" + id() + "' holds no team key: a commander makes one (newTeamKey) and sends it to members (wrapTeamKey)");
         }
         fits(Protection.TEAM_MAC, payload);
-        byte[] datagram = FrameCodec.keyed(FrameCodec.TEAM_MAC, team.id, idBytes, clock.nowMillis(), nextCounter(), payload, FrameCodec.MAC);
-        team.mac.sign(datagram, datagram.length - FrameCodec.MAC);
+        long ctr = nextCounter();
+        byte[] datagram = FrameCodec.keyed(FrameCodec.TEAM_MAC, team.id, idBytes, ctr, payload, FrameCodec.MAC);
+        team.mac.sign(ctr, datagram, datagram.length - FrameCodec.MAC);
         stats.teamWrapped++;
         return datagram;
     }
@@ -215,7 +220,7 @@ public final class SecureEndpoint {
         }
         long ctr = nextCounter();
         int aadLength = FrameCodec.keyedHeaderBytes(FrameCodec.TEAM_KEY, idBytes.length);
-        byte[] header = FrameCodec.keyed(FrameCodec.TEAM_KEY, 0, idBytes, clock.nowMillis(), ctr, new byte[0], 0);
+        byte[] header = FrameCodec.keyed(FrameCodec.TEAM_KEY, 0, idBytes, ctr, new byte[0], 0);
         byte[] sealed = Seal.seal(session.sendSeal, ctr, header, aadLength, team.key);
         byte[] datagram = PairKeys.concat(header, sealed);
         stats.teamKeysSent++;
@@ -253,15 +258,21 @@ public final class SecureEndpoint {
      * long as it sent fewer than about a million datagrams per millisecond.
      */
     long nextCounter() {
-        counter = Math.max(counter + 1, clock.nowMillis() << 20);
+        counter = Math.max(counter + 1, clock.nowMillis() << COUNTER_SHIFT);
         return counter;
+    }
+
+    /** Where a receiver looks for a sender's counter: its own clock, shifted as a counter is. */
+    long referenceCounter() {
+        return clock.nowMillis() << COUNTER_SHIFT;
     }
 
     /** A signed HELLO to {@code peer}: this side's key for the pair, and the peer's as last seen. */
     byte[] helloDatagram(String peer, PeerState p) {
-        byte[] datagram = FrameCodec.hello(credentialBytes, clock.nowMillis(), nextCounter(),
-                peer.getBytes(StandardCharsets.UTF_8), p.ephemeral.publicBytes(), p.peerEphemeral);
-        sign(datagram);
+        long ctr = nextCounter();
+        byte[] datagram = FrameCodec.hello(credentialBytes, ctr, peer.getBytes(StandardCharsets.UTF_8), p.ephemeral.publicBytes(),
+                p.peerEphemeral);
+        sign(ctr, datagram);
         stats.hellosSent++;
         return datagram;
     }
@@ -286,9 +297,10 @@ public final class SecureEndpoint {
         return p;
     }
 
-    private void sign(byte[] datagram) {
+    /** Signs the full {@code counter} and the datagram before its signature; writes the signature at its end. */
+    private void sign(long counter, byte[] datagram) {
         int n = datagram.length - FrameCodec.SIG;
-        System.arraycopy(identity.key().sign(datagram, 0, n), 0, datagram, n, FrameCodec.SIG);
+        System.arraycopy(identity.key().sign(FrameCodec.toBeSigned(counter, datagram, n)), 0, datagram, n, FrameCodec.SIG);
     }
 
     private Session sessionWith(String peer, String purpose) {

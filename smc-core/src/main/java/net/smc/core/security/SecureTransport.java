@@ -277,7 +277,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     /** Whether {@code data} is a signed datagram (not a HELLO) whose payload the receiver would ignore: parsed, not checked. */
     private boolean ignorable(byte[] data) {
         try {
-            return FrameCodec.read(data) instanceof Frame.Signed s
+            return FrameCodec.read(data, endpoint.referenceCounter()) instanceof Frame.Signed s
                     && unverifiedFilter.test(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart());
         } catch (Malformed m) {
             return false; // refused and counted by the endpoint
@@ -287,7 +287,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     /** The payload of {@code data} when it is a signed datagram (not a HELLO) the receiver reads before it is checked, else null. */
     private byte[] heldPayload(byte[] data) {
         try {
-            if (FrameCodec.read(data) instanceof Frame.Signed s) {
+            if (FrameCodec.read(data, endpoint.referenceCounter()) instanceof Frame.Signed s) {
                 return held.accepts(s.datagram(), s.payloadStart(), s.signedLength() - s.payloadStart())
                         ? Arrays.copyOfRange(s.datagram(), s.payloadStart(), s.signedLength()) : null;
             }

@@ -2,6 +2,7 @@ package net.smc.core.security;
 
 import javax.crypto.Mac;
 import javax.crypto.ShortBufferException;
+import net.smc.core.wire.ByteWriter;
 
 /**
  * HMAC-SHA256 cut to its first {@value #BYTES} bytes (RFC 2104 section 5 allows keeping the
@@ -14,20 +15,21 @@ final class TruncatedMac {
 
     private final Mac mac;
     private final byte[] full = new byte[Hkdf.HASH_BYTES];
+    private final byte[] counterBytes = new byte[Long.BYTES];
 
     TruncatedMac(byte[] key) {
         this.mac = Hkdf.hmac(key);
     }
 
-    /** Writes the MAC of {@code data[0, length)} into {@code data[length, length + 16)}. */
-    void sign(byte[] data, int length) {
-        compute(data, length);
+    /** Writes the MAC of the full {@code counter} and {@code data[0, length)} into {@code data[length, length + 16)}. */
+    void sign(long counter, byte[] data, int length) {
+        compute(counter, data, length);
         System.arraycopy(full, 0, data, length, BYTES);
     }
 
-    /** Whether {@code data[length, length + 16)} is the MAC of {@code data[0, length)}; compares in constant time. */
-    boolean verify(byte[] data, int length) {
-        compute(data, length);
+    /** Whether {@code data[length, length + 16)} is the MAC of the full {@code counter} and {@code data[0, length)}; in constant time. */
+    boolean verify(long counter, byte[] data, int length) {
+        compute(counter, data, length);
         int diff = 0;
         for (int i = 0; i < BYTES; i++) {
             diff |= full[i] ^ data[length + i];
@@ -35,7 +37,9 @@ final class TruncatedMac {
         return diff == 0;
     }
 
-    private void compute(byte[] data, int length) {
+    private void compute(long counter, byte[] data, int length) {
+        ByteWriter.putI64(counterBytes, 0, counter);
+        mac.update(counterBytes);
         mac.update(data, 0, length);
         try {
             mac.doFinal(full, 0);

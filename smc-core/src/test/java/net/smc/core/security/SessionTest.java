@@ -298,10 +298,10 @@ class SessionTest {
     }
 
     @Test
-    void pairOverhead_is35BytesPlusTheSenderId() {
+    void pairOverhead_is25BytesPlusTheSenderId() {
         Team.shakeHands(a, b);
 
-        assertEquals(35 + "uav-a".length(), a.overhead(Protection.PAIR_MAC));
-        assertEquals(heartbeat.length + 40, a.wrapFor("uav-b", heartbeat).length);
+        assertEquals(25 + "uav-a".length(), a.overhead(Protection.PAIR_MAC));
+        assertEquals(heartbeat.length + 30, a.wrapFor("uav-b", heartbeat).length);
     }
 }

@@ -205,7 +205,7 @@ class SignedMessagesTest {
     void signedOverhead_isHeaderCredentialAndSignature() {
         int credential = 123 + "cmdr".length() + MISSION.length();
 
-        assertEquals(2 + 8 + 8 + 1 + credential + 64, commander.overhead(Protection.SIGNED));
+        assertEquals(2 + 6 + 1 + credential + 64, commander.overhead(Protection.SIGNED));
         assertEquals(commander.wrapSigned(discovery).length, discovery.length + commander.overhead(Protection.SIGNED));
     }
 

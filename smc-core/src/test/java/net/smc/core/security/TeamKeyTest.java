@@ -57,7 +57,7 @@ class TeamKeyTest {
         byte[] datagram = commander.wrapTeamKey("uav-b");
 
         assertFalse(indexOf(datagram, commander.team.key) >= 0, "the team key travels sealed");
-        assertEquals(2 + 1 + 4 + 16 + 32 + 16, datagram.length);
+        assertEquals(2 + 1 + 4 + 6 + 32 + 16, datagram.length);
     }
 
     @Test
@@ -158,11 +158,11 @@ class TeamKeyTest {
     }
 
     @Test
-    void teamOverhead_is39BytesPlusTheSenderId() {
+    void teamOverhead_is29BytesPlusTheSenderId() {
         handOut();
 
-        assertEquals(39 + "uav-b".length(), b.overhead(Protection.TEAM_MAC));
-        assertEquals(status.length + 44, b.wrapTeam(status).length);
+        assertEquals(29 + "uav-b".length(), b.overhead(Protection.TEAM_MAC));
+        assertEquals(status.length + 34, b.wrapTeam(status).length);
     }
 
     private static int indexOf(byte[] haystack, byte[] needle) {

@@ -61,7 +61,7 @@ class UnwrapRobustnessTest {
             byte[] datagram = new byte[random.nextInt(Transport.MAX_DATAGRAM_BYTES + 1)];
             random.nextBytes(datagram);
             if (datagram.length >= 2 && random.nextBoolean()) {
-                datagram[0] = 1;                                   // a known version, so parsing goes deeper
+                datagram[0] = (byte) FrameCodec.VERSION;            // a known version, so parsing goes deeper
                 datagram[1] = (byte) (1 + random.nextInt(5));      // a known kind
             }
             refuse(b, datagram, "random datagram " + i);
