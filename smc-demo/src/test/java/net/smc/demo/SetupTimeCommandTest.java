@@ -146,6 +146,27 @@ class SetupTimeCommandTest {
     }
 
     /**
+     * On a radio that loses most datagrams the cells give up on critical messages: the point's line
+     * counts them, and the communication manager's warning for each is quieted (unless asked for).
+     */
+    @Test
+    void criticalMessagesGivenUpOn_areCountedOnThePointsLine() throws Exception {
+        Smc.Result r = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "2", "--seed", "3",
+                "--schemes", "distributed", "--out", "out", "--costs", costs().toString(), "--policies",
+                policies().toString(), "--loss", "0.8", "--limit", "5000");
+        assertEquals(0, r.status(), r.err());
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("incomplete, (\\d+) critical messages given up on, ")
+                .matcher(r.out());
+        assertTrue(m.find() && Long.parseLong(m.group(1)) > 0, r.out());
+        assertEquals("error", System.getProperty(SetupTimeCommand.COMM_LOG_LEVEL));
+
+        Smc.Result clean = Smc.in(dir).run("experiment", "setup-time", "--roles", "5", "--runs", "1", "--seed", "3",
+                "--schemes", "distributed", "--out", "clean", "--costs", costs().toString(), "--policies",
+                policies().toString(), "--loss", "0");
+        assertTrue(!clean.out().contains("given up on"), "none given up on, none said: " + clean.out());
+    }
+
+    /**
      * {@code --network lan}: the switched LAN's figures (one hop of at most 1 ms, 100 Mbit/s, no loss),
      * so every run of the same seeds sets up faster than on the ad-hoc radio, whose shortest one-way
      * trip alone is 4 ms and a level at least two of them; an option replaces one of its figures.

@@ -15,7 +15,7 @@ import net.smc.sim.experiment.SetupResult;
 
 class SetupTimeShapeTest {
     private static SetupResult run(int roles, Scheme scheme, String transport, int run, double millis) {
-        return new SetupResult(roles, scheme, transport, run, millis, 10, 1_000, 1.0, millis < 0 ? 0 : roles - 1);
+        return new SetupResult(roles, scheme, transport, run, millis, 10, 1_000, 1.0, millis < 0 ? 0 : roles - 1, 0);
     }
 
     /** Three runs a point, the median the middle one: {@code medians[i]} at {@code roles[i]}. */

@@ -16,9 +16,11 @@ import net.smc.core.cell.Scheme;
  * @param busiestCpuMillis the CPU time charged to the busiest cell until then; on UDP the CPU time its
  *                     thread used, measured, until the run was seen to end
  * @param started      roles started (of {@code roles - 1}: the commander's is not assigned)
+ * @param undelivered  critical messages the cells gave up on (no Ack after every retransmission) by
+ *                     the run's end: a radio so backed up that a peer's Acks come too late
  */
 public record SetupResult(int roles, Scheme scheme, String transport, int run, double setupMillis, long messages,
-                          long bytes, double busiestCpuMillis, int started) {
+                          long bytes, double busiestCpuMillis, int started, long undelivered) {
 
     /** Whether every role started. */
     public boolean complete() {

@@ -90,11 +90,20 @@ public final class SetupTimeRun {
         report.accept(progress.levels() + progress.tail() + progress.assignments() + charge.ledger().report() + retransmissions(sim));
         double setup = progress.complete() && progress.start >= 0 ? progress.end - progress.start : -1;
         return new SetupResult(generated.seats(), scheme, "sim", run, setup, charge.datagrams(), charge.bytes(),
-                busiest / 1_000.0, progress.seats.size());
+                busiest / 1_000.0, progress.seats.size(), undelivered(sim));
+    }
+
+    /** The critical messages the team's cells gave up on. */
+    static long undelivered(TeamSimulation sim) {
+        long failed = 0;
+        for (net.smc.core.cell.Cell c : sim.cells()) {
+            failed += c.communication().sender().counters().failed();
+        }
+        return failed;
     }
 
     /**
-     * A line on the team's critical messages: sent, retransmitted, tail probes, and copies their receivers already
+     * A line on the team's critical messages: sent, retransmitted, tail probes, given up on, and copies their receivers already
      * had (a retransmission whose first copy arrived: its Ack was lost, or it went too soon).
      */
     static String retransmissions(TeamSimulation sim) {
@@ -103,6 +112,7 @@ public final class SetupTimeRun {
         long fast = 0;
         long probes = 0;
         long duplicates = 0;
+        long failed = 0;
         for (net.smc.core.cell.Cell c : sim.cells()) {
             net.smc.core.comm.SenderCounters k = c.communication().sender().counters();
             sent += k.sent();
@@ -110,9 +120,10 @@ public final class SetupTimeRun {
             fast += k.fastRetransmitted();
             probes += k.probes();
             duplicates += k.duplicates();
+            failed += k.failed();
         }
         return "team's critical messages: " + sent + " sent, " + retransmitted + " retransmitted (" + fast
-                + " before their timeout), " + probes + " tail probes, " + duplicates
+                + " before their timeout), " + probes + " tail probes, " + failed + " given up on, " + duplicates
                 + " copies received again\n";
     }
 

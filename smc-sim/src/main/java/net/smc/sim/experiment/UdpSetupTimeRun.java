@@ -95,7 +95,9 @@ public final class UdpSetupTimeRun {
             }
             for (int i = 0; i < hosts.size(); i++) {
                 long atStart = startCpu[i];
-                progress.cpu(hosts.get(i).call(() -> THREADS.getCurrentThreadCpuTime() - atStart));
+                CellHost host = hosts.get(i);
+                progress.cpu(host.call(() -> THREADS.getCurrentThreadCpuTime() - atStart));
+                progress.undelivered(host.call(() -> host.cell().communication().sender().counters().failed()));
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -117,6 +119,7 @@ public final class UdpSetupTimeRun {
         private long messages = -1;
         private long sentBytes = -1;
         private long busiestCpuNanos;
+        private long undelivered;
 
         Progress(int needed, AtomicLong datagrams, AtomicLong bytes) {
             this.needed = needed;
@@ -144,6 +147,10 @@ public final class UdpSetupTimeRun {
             busiestCpuNanos = Math.max(busiestCpuNanos, nanos);
         }
 
+        synchronized void undelivered(long failed) {
+            undelivered += failed;
+        }
+
         synchronized boolean complete() {
             return seats.size() >= needed;
         }
@@ -152,7 +159,7 @@ public final class UdpSetupTimeRun {
             boolean done = complete() && startNanos >= 0;
             double setup = done ? (endNanos - startNanos) / 1e6 : -1;
             return new SetupResult(roles, scheme, "udp", run, setup, done ? messages : datagrams.get(),
-                    done ? sentBytes : bytes.get(), busiestCpuNanos / 1e6, seats.size());
+                    done ? sentBytes : bytes.get(), busiestCpuNanos / 1e6, seats.size(), undelivered);
         }
     }
 
