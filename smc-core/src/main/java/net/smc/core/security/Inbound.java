@@ -216,7 +216,7 @@ final class Inbound {
         return checkTime(k, window, now, k.sender(), describe(k));
     }
 
-    /** Refuses a timestamp outside the freshness window, then a counter {@code window} has seen (a null window has seen none). */
+    /** Refuses a counter whose time is outside the freshness window, then one {@code window} has seen (a null window has seen none). */
     private Unwrapped checkTime(Frame frame, ReplayWindow window, long now, String sender, String who) {
         long ts = frame.timestampMillis();
         long w = e.settings.freshnessWindowMillis();

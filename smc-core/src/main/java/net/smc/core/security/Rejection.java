@@ -24,7 +24,7 @@ public enum Rejection {
      * handshake older than the newest taken from the sender.
      */
     REPLAY,
-    /** A timestamp further from the receiver's clock than the freshness window. */
+    /** A counter whose time lies further from the receiver's clock than the freshness window. */
     STALE,
     /** The MAC (or the AES-GCM tag of a team key) does not verify: altered, or under another key. */
     BAD_MAC,

@@ -4,9 +4,12 @@ package net.smc.core.security;
  * The tunable numbers of a {@link SecureEndpoint}, with defaults that suit a team on one radio
  * network whose clocks agree to within seconds (GPS time, say).
  *
- * @param freshnessWindowMillis how far, in milliseconds, a message's timestamp may lie from the
- *                              receiver's clock, either way, before it is refused as stale; it also
- *                              bounds how long a receiver must remember counters. Default 30,000.
+ * @param freshnessWindowMillis how far, in milliseconds, a message's time (its counter's, which
+ *                              follows the sender's clock) may lie from the receiver's clock, either
+ *                              way, before it is refused as stale; it also bounds how long a receiver
+ *                              must remember counters. At most a day, well inside the 1.5 days either
+ *                              way in which the 48 bits of counter a datagram carries name one counter.
+ *                              Default 30,000.
  * @param replayWindow          how many recent counters a receiver remembers per sender (per session,
  *                              per team key), so that re-ordered messages still pass but repeats do
  *                              not; a counter at or below the oldest one forgotten is refused. Default 64.
