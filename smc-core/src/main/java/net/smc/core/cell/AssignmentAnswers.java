@@ -104,7 +104,7 @@ final class AssignmentAnswers {
         st.handover.remove(seat.get().role());
         st.forgetAnswer(vehicle);
         ctx.emit(CellEvent.Kind.ASSIGNED, seat.get() + " to " + vehicle + " (now holds " + child.seats + ")");
-        backup.sendRosterIfBackup();
+        backup.rosterChanged();
         counts.updateMissionState();
     }
 

@@ -31,6 +31,10 @@ final class BackupCommander {
     private final Merge merge;
     /** Whether this backup has asked for every policy file of the mission. */
     private boolean prefetched;
+    /** When this acting commander last sent its roster (never: far in the past). */
+    private long rosterSentMillis = Long.MIN_VALUE / 2;
+    /** Whether the team changed since the last roster, which waits for the next tick. */
+    private boolean rosterDue;
 
     BackupCommander(TeamContext ctx, TeamState st, Seating seating, TeamCounts counts, Merge merge) {
         this.ctx = ctx;
@@ -40,10 +44,28 @@ final class BackupCommander {
         this.merge = merge;
     }
 
-    void sendRosterIfBackup() {
-        if (st.acting) {
-            sendRoster();
+    /**
+     * The team changed (a seat accepted, a child failed): an acting commander tells its backups now,
+     * or, if a roster went to them less than half a heartbeat period ago, at its next tick
+     * ({@link #rosterDue}). Each roster names every member, so one per acceptance would cost a
+     * commander seating <i>n</i> children directly (the centralised scheme) some <i>n</i>^2 / 2
+     * members' entries on its radio while the team forms: 20 MB for a thousand, against the few
+     * hundred kilobytes of the assignments themselves.
+     */
+    void rosterChanged() {
+        if (!st.acting) {
+            return;
         }
+        if (ctx.clock().nowMillis() - rosterSentMillis >= ctx.timing().comTimeoutMillis() / 2) {
+            sendRoster();
+        } else {
+            rosterDue = true;
+        }
+    }
+
+    /** Whether a change of the team waits to be sent to the backups at this tick. */
+    boolean rosterDue() {
+        return rosterDue;
     }
 
     /** Replicates the team roster to the backups: the first children able to command, by identity. */
@@ -71,6 +93,8 @@ final class BackupCommander {
         for (Child b : able) {
             ctx.send(b.address, r);
         }
+        rosterSentMillis = ctx.clock().nowMillis();
+        rosterDue = false;
     }
 
     void onRoster(Envelope env, Roster r) {

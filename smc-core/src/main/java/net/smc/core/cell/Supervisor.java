@@ -173,7 +173,7 @@ final class Supervisor {
         if (open || (st.acting && !st.recruitingHeld && st.ticks % Timing.BEACON_TICKS == 0)) {
             merge.discover();
         }
-        if (st.acting && st.ticks % Timing.ROSTER_TICKS == 0) {
+        if (st.acting && (st.ticks % Timing.ROSTER_TICKS == 0 || backup.rosterDue())) {
             backup.sendRoster();
         }
         counts.updateMissionState();
@@ -283,7 +283,7 @@ final class Supervisor {
             // Table II decides: UAVFailure(name role uav state).
             ctx.host().raise("UAVFailure", "UAVFailure", s.role(), child.vehicle, child.state);
         }
-        backup.sendRosterIfBackup();
+        backup.rosterChanged();
         counts.updateMissionState();
     }
 

@@ -144,7 +144,7 @@ class LevelLatencyTest {
     void aManagerThatLostAVehicleToAnotherAssignsOneThatAnsweredItWithoutDiscovering() throws Exception {
         GeneratedMission g = generated();
         int refusals = 0;
-        for (long seed = 11; seed <= 14; seed++) {
+        for (long seed = 11; seed <= 20; seed++) {
             List<CellEvent> events = new ArrayList<>();
             Mission mission = new MissionLoader(new PolicyRepository(g.repository())).load(g.instanceFile(Scheme.DISTRIBUTED));
             TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
@@ -168,7 +168,7 @@ class LevelLatencyTest {
                         + " ms\n" + String.join("\n", sim.trace()));
             }
         }
-        assertTrue(refusals > 0, "no manager lost a vehicle to another in seeds 11-14: the test saw nothing");
+        assertTrue(refusals > 0, "no manager lost a vehicle to another in seeds 11-20: the test saw nothing");
     }
 
     /**
