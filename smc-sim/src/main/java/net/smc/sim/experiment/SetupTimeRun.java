@@ -112,7 +112,6 @@ public final class SetupTimeRun {
         long fast = 0;
         long probes = 0;
         long duplicates = 0;
-        long failed = 0;
         for (net.smc.core.cell.Cell c : sim.cells()) {
             net.smc.core.comm.SenderCounters k = c.communication().sender().counters();
             sent += k.sent();
@@ -120,10 +119,9 @@ public final class SetupTimeRun {
             fast += k.fastRetransmitted();
             probes += k.probes();
             duplicates += k.duplicates();
-            failed += k.failed();
         }
         return "team's critical messages: " + sent + " sent, " + retransmitted + " retransmitted (" + fast
-                + " before their timeout), " + probes + " tail probes, " + failed + " given up on, " + duplicates
+                + " before their timeout), " + probes + " tail probes, " + undelivered(sim) + " given up on, " + duplicates
                 + " copies received again\n";
     }
 
