@@ -64,6 +64,7 @@ final class ScaledTeam {
     private long bytes;
     private final long[] datagramsByType = new long[256];
     private final long[] bytesByType = new long[256];
+    private final long[] wireBytesByType = new long[256];
     /** The mission the vehicles' credentials name: its length is in every signed datagram. */
     private final String missionName;
     private long wireBytes;
@@ -158,6 +159,11 @@ final class ScaledTeam {
         return bytesByType[code];
     }
 
+    /** Bytes of those in the real security envelopes ({@link #wireBytes}). */
+    long wireBytes(int code) {
+        return wireBytesByType[code];
+    }
+
     private void seen(CellEvent e) {
         if (e.kind() == CellEvent.Kind.COMMANDING && e.vehicle().equals(GeneratedMission.COMMANDER) && startMillis < 0) {
             startMillis = e.timeMillis();
@@ -175,10 +181,12 @@ final class ScaledTeam {
         public void sent(long atMillis, Address from, Address to, byte[] data) {
             datagrams++;
             bytes += data.length;
-            wireBytes += wireLength(to, data);
+            long wire = wireLength(to, data);
+            wireBytes += wire;
             int type = typeOf(data);
             datagramsByType[type]++;
             bytesByType[type] += data.length;
+            wireBytesByType[type] += wire;
         }
 
         /** {@code data}'s length in the envelope a real security layer gives it ({@link #wireBytes}). */
