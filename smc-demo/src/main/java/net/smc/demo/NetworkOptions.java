@@ -59,14 +59,8 @@ final class NetworkOptions {
         if (hops != null && (hops < 1 || hops > MAX_HOPS)) {
             throw new ParameterException(spec.commandLine(), "--hops " + hops + ": it must be from 1 to " + MAX_HOPS);
         }
-        if (hopLatencyMillis != null && (hopLatencyMillis < 0 || hopLatencyMillis > MAX_HOP_MILLIS)) {
-            throw new ParameterException(spec.commandLine(), "--hop-latency " + hopLatencyMillis + ": it must be from 0 to "
-                    + MAX_HOP_MILLIS + " ms");
-        }
-        if (hopJitterMillis != null && (hopJitterMillis < 0 || hopJitterMillis > MAX_HOP_MILLIS)) {
-            throw new ParameterException(spec.commandLine(), "--hop-jitter " + hopJitterMillis + ": it must be from 0 to "
-                    + MAX_HOP_MILLIS + " ms");
-        }
+        checkHopMillis(spec, "--hop-latency", hopLatencyMillis);
+        checkHopMillis(spec, "--hop-jitter", hopJitterMillis);
         if (bandwidthMbit != null && !(bandwidthMbit >= 1e-5 && bandwidthMbit <= 1e6)) {
             throw new ParameterException(spec.commandLine(), "--bandwidth " + bandwidthMbit
                     + ": it must be from 0.00001 to 1000000 Mbit/s");
@@ -79,5 +73,13 @@ final class NetworkOptions {
                 hopJitterMillis == null ? model.hopJitterMillis() : hopJitterMillis,
                 bandwidthMbit == null ? model.bytesPerSecond() : Math.round(bandwidthMbit * 1e6 / 8),
                 loss == null ? model.loss() : loss);
+    }
+
+    /** A hop's delay given as {@code option} must be from 0 to {@value #MAX_HOP_MILLIS} ms (null: not given). */
+    private static void checkHopMillis(CommandSpec spec, String option, Long millis) {
+        if (millis != null && (millis < 0 || millis > MAX_HOP_MILLIS)) {
+            throw new ParameterException(spec.commandLine(), option + " " + millis + ": it must be from 0 to "
+                    + MAX_HOP_MILLIS + " ms");
+        }
     }
 }

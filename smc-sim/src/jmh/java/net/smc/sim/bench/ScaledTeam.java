@@ -2,8 +2,10 @@ package net.smc.sim.bench;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -13,12 +15,10 @@ import java.util.function.Consumer;
 
 import net.smc.core.cell.CellEvent;
 import net.smc.core.cell.Scheme;
-import java.nio.charset.StandardCharsets;
-
 import net.smc.core.mission.Mission;
+import net.smc.core.mission.MissionLoader;
 import net.smc.core.security.IdealAuthentication;
 import net.smc.core.security.WireSizes;
-import net.smc.core.mission.MissionLoader;
 import net.smc.core.transport.Address;
 import net.smc.core.transport.sim.NetworkObserver;
 import net.smc.policy.api.PolicyRepository;
@@ -177,11 +177,17 @@ final class ScaledTeam {
 
     /** Counts what is sent, as the network sees it leave. */
     private final class Counting implements NetworkObserver {
+        /**
+         * Per sending address, the bytes the real security envelopes add round a payload:
+         * {@code PAIR_MAC} then {@code SIGNED}; read once from the sender named in its first datagram.
+         */
+        private final Map<Address, int[]> envelopes = new HashMap<>();
+
         @Override
         public void sent(long atMillis, Address from, Address to, byte[] data) {
             datagrams++;
             bytes += data.length;
-            long wire = wireLength(to, data);
+            long wire = wireLength(from, to, data);
             wireBytes += wire;
             int type = typeOf(data);
             datagramsByType[type]++;
@@ -190,14 +196,17 @@ final class ScaledTeam {
         }
 
         /** {@code data}'s length in the envelope a real security layer gives it ({@link #wireBytes}). */
-        private long wireLength(Address to, byte[] data) {
+        private long wireLength(Address from, Address to, byte[] data) {
             boolean sealed = data.length >= IdealAuthentication.SEAL_BYTES + 5
                     && data[IdealAuthentication.PAYLOAD_OFFSET] == 'S' && data[IdealAuthentication.PAYLOAD_OFFSET + 1] == 'M';
             int at = sealed ? IdealAuthentication.PAYLOAD_OFFSET : 0;
             int payload = sealed ? data.length - IdealAuthentication.SEAL_BYTES : data.length;
-            int n = data.length > at + 4 ? Math.min(data[at + 4] & 0xFF, data.length - at - 5) : 0;
-            String sender = new String(data, at + 5, Math.max(0, n), StandardCharsets.UTF_8);
-            return to == null ? WireSizes.signed(sender, missionName, payload) : WireSizes.pairMac(sender, payload);
+            int[] envelope = envelopes.computeIfAbsent(from, a -> {
+                int n = data.length > at + 4 ? Math.min(data[at + 4] & 0xFF, data.length - at - 5) : 0;
+                String sender = new String(data, at + 5, Math.max(0, n), StandardCharsets.UTF_8);
+                return new int[] {WireSizes.pairMac(sender, 0), WireSizes.signed(sender, missionName, 0)};
+            });
+            return payload + envelope[to == null ? 1 : 0];
         }
 
         /**

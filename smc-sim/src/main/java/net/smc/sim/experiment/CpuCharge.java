@@ -258,11 +258,6 @@ public final class CpuCharge implements CpuModel {
         }
         // HELLO 1 taken: a key pair; HELLO 2 or 3 taken: the agreement (agreeNanos is both, Calibration).
         double ns = costs.verifyNanos() + (h.steps == 4 ? 0 : costs.agreeNanos() / 2);
-        if (h.steps == 2) {
-            h.initiatorSession = true;
-        } else if (h.steps == 3) {
-            h.responderSession = true;
-        }
         if (h.steps < 4) {
             ns += costs.signNanos();
             long length = hello(node, sender);
@@ -283,11 +278,16 @@ public final class CpuCharge implements CpuModel {
 
     /** The verification of {@code sender}'s credential, the first time {@code node} takes a signed datagram from it. */
     private double credential(Node node, Node sender) {
+        return charge(node, Category.HANDSHAKE, credentialNanos(node, sender));
+    }
+
+    /** A credential verification if {@code node} has not verified {@code sender}'s yet (recording that it has), else 0. */
+    private double credentialNanos(Node node, Node sender) {
         if (node.credentials.get(sender.number)) {
             return 0;
         }
         node.credentials.set(sender.number);
-        return charge(node, Category.HANDSHAKE, costs.verifyNanos());
+        return costs.verifyNanos();
     }
 
     private Handshake handshake(Node a, Node b) {
@@ -308,8 +308,7 @@ public final class CpuCharge implements CpuModel {
         if (handshake(node, sender).hasSession(sender)) {
             node.owedNanos += costs.macNanos();
         } else {
-            node.owedNanos += costs.verifyNanos() + (node.credentials.get(sender.number) ? 0 : costs.verifyNanos());
-            node.credentials.set(sender.number);
+            node.owedNanos += costs.verifyNanos() + credentialNanos(node, sender);
         }
     }
 
@@ -475,17 +474,18 @@ public final class CpuCharge implements CpuModel {
 
     /**
      * The handshake of two cells, as their security layers run it: how many of its four HELLOs have
-     * been sent (0: none, so no session), which of the two sent the first, and which has its session.
+     * been sent (0: none, so no session), and which of the two sent the first.
      */
     private static final class Handshake {
         int steps;
         int initiator = -1;
-        boolean initiatorSession;
-        boolean responderSession;
 
-        /** Whether {@code node} has its session with the other of the two (it MACs what it sends). */
+        /**
+         * Whether {@code node} has its session with the other of the two (it MACs what it sends): the
+         * initiator once it took the second HELLO (so the third went), the other once it took the third.
+         */
         boolean hasSession(Node node) {
-            return node.number == initiator ? initiatorSession : steps > 0 && responderSession;
+            return steps >= (node.number == initiator ? 3 : 4);
         }
     }
 

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
@@ -48,9 +47,8 @@ class RosterTrafficTest {
             public void sent(long atMillis, Address from, Address to, byte[] data) {
                 if (from.equals(commander)) {
                     // the seal: a counter before the message, a tag after it
-                    byte[] message = Arrays.copyOfRange(data, IdealAuthentication.PAYLOAD_OFFSET,
-                            data.length - (IdealAuthentication.SEAL_BYTES - IdealAuthentication.PAYLOAD_OFFSET));
-                    if (decoder.decode(message) instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Roster r) {
+                    if (decoder.decode(data, IdealAuthentication.PAYLOAD_OFFSET, data.length - IdealAuthentication.SEAL_BYTES)
+                            instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Roster r) {
                         rosters.add(r);
                     }
                 }
