@@ -100,7 +100,7 @@ final class CapabilityReader extends ByteReader<CapabilityFormatException> {
     private record Errors(String what, int available, int maxEncodedBytes) implements WireErrors<CapabilityFormatException> {
         @Override
         public CapabilityFormatException error(WireProblem problem, int offset, String field, String rule) {
-            return new CapabilityFormatException(what + ": " + field + " at byte " + offset + ": " + rule, offset);
+            return new CapabilityFormatException(what + ": " + field + " at byte " + offset + ": " + rule, offset, problem);
         }
 
         @Override

@@ -1,6 +1,7 @@
 package net.smc.core.cell;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -109,6 +110,7 @@ public final class Cell {
         MessageRouter router = new MessageRouter();
         this.comm = CommunicationManager.builder(vehicle, b.transport, b.clock, b.scheduler)
                 .random(random.split()).router(router).sharedDecodes(b.sharedDecodes)
+                .senderLeftToTransport(EnumSet.complementOf(EnumSet.copyOf(UnverifiedReads.READ_UNCHECKED)))
                 .settings(b.senderSettings != null ? b.senderSettings : timing.senderSettings()).build();
         AuthenticatingTransport auth = b.transport instanceof AuthenticatingTransport a ? a : null;
         TeamProtocol.Host host = new TeamProtocol.Host() {

@@ -1,5 +1,8 @@
 package net.smc.core.cell;
 
+import java.util.Collections;
+import java.util.EnumSet;
+import java.util.Set;
 import java.util.function.BooleanSupplier;
 
 import net.smc.core.message.DecodeResult;
@@ -18,6 +21,16 @@ import net.smc.core.transport.Address;
  * withdrawals, held unchecked.
  */
 final class UnverifiedReads {
+    /**
+     * The types read here, before the transport has checked who sent them: they name their sender
+     * in their header, and every other type leaves it to the transport, which proves it
+     * ({@link net.smc.core.comm.CommunicationManager.Builder#senderLeftToTransport}). A datagram of
+     * another type that left its sender out does not decode here, so it is neither dropped unchecked
+     * nor held: it is checked as it comes.
+     */
+    static final Set<MessageType> READ_UNCHECKED = Collections.unmodifiableSet(
+            EnumSet.of(MessageType.DISCOVERY, MessageType.DISCOVERY_REPLY, MessageType.WITHDRAWAL));
+
     /** Where a message's type code sits in its datagram (after the magic and the version: {@code Header}). */
     private static final int TYPE_AT = 3;
 

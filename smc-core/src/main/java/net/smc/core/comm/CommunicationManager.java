@@ -4,6 +4,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
 import java.util.random.RandomGenerator;
 
 import org.slf4j.Logger;
@@ -13,6 +14,7 @@ import net.smc.core.message.Ack;
 import net.smc.core.message.Acks;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.Message;
+import net.smc.core.message.MessageType;
 import net.smc.core.message.ReassemblySettings;
 import net.smc.core.message.SharedDecodes;
 import net.smc.core.router.MessageRouter;
@@ -88,7 +90,8 @@ public final class CommunicationManager {
         this.router = b.router;
         this.critical = b.critical;
         this.defaultListener = b.listener;
-        this.wire = new Wire(b.transport, b.clock, b.reassembly, counters, b.sharedDecodes);
+        this.wire = new Wire(b.transport, b.clock, b.reassembly, counters, b.sharedDecodes,
+                b.transport instanceof AuthenticatingTransport ? b.senderLeft : Set.of());
         this.ids = new IdSource(b.clock);
         this.sender = new MessageSender(b.vehicleId, b.clock, b.scheduler, b.random, b.settings, wire, ids);
     }
@@ -261,7 +264,7 @@ public final class CommunicationManager {
         if (stopped) {
             return;
         }
-        Envelope envelope = wire.decode(from, data);
+        Envelope envelope = wire.decode(proven, from, data);
         if (envelope == null) {
             return;
         }
@@ -334,6 +337,7 @@ public final class CommunicationManager {
         private ReassemblySettings reassembly = ReassemblySettings.DEFAULTS;
         private DeliveryListener listener;
         private SharedDecodes sharedDecodes;
+        private Set<MessageType> senderLeft = Set.of();
 
         private Builder(String vehicleId, Transport transport, Clock clock, Scheduler scheduler) {
             if (vehicleId == null || vehicleId.isEmpty()) {
@@ -353,6 +357,18 @@ public final class CommunicationManager {
          */
         public Builder sharedDecodes(SharedDecodes table) {
             this.sharedDecodes = table;
+            return this;
+        }
+
+        /**
+         * On an authenticating transport, the message types whose header leaves the sender out, to
+         * be named by the receiver's transport, which proves it (default: none; on a plain transport
+         * every header names its sender whatever is set here). A receiver reads such a message only
+         * from its authenticated receiver, so leave out the types no receiver reads before the
+         * transport's checks. Must be the same on every cell, as the critical types are.
+         */
+        public Builder senderLeftToTransport(Set<MessageType> types) {
+            this.senderLeft = Set.copyOf(types);
             return this;
         }
 

@@ -1,6 +1,7 @@
 package net.smc.core.comm;
 
 import java.util.List;
+import java.util.Set;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -9,6 +10,7 @@ import net.smc.core.message.DecodeResult;
 import net.smc.core.message.Envelope;
 import net.smc.core.message.MessageDecoder;
 import net.smc.core.message.MessageEncoder;
+import net.smc.core.message.MessageType;
 import net.smc.core.message.ReassemblySettings;
 import net.smc.core.message.SharedDecodes;
 import net.smc.core.transport.Address;
@@ -28,9 +30,11 @@ final class Wire {
     private final MessageDecoder decoder;
     private final CommCounters counters;
 
-    Wire(Transport transport, Clock clock, ReassemblySettings reassembly, CommCounters counters, SharedDecodes shared) {
+    /** {@code senderLeft}: the types whose header leaves the sender to the transport (see {@link MessageEncoder#leaveSenderToTransport}). */
+    Wire(Transport transport, Clock clock, ReassemblySettings reassembly, CommCounters counters, SharedDecodes shared,
+            Set<MessageType> senderLeft) {
         this.transport = transport;
-        this.encoder = new MessageEncoder(transport.datagramCapacity());
+        this.encoder = new MessageEncoder(transport.datagramCapacity()).leaveSenderToTransport(senderLeft);
         this.decoder = new MessageDecoder(clock::nowMillis, reassembly).share(shared);
         this.counters = counters;
     }
@@ -71,10 +75,14 @@ final class Wire {
         }
     }
 
-    /** The message in {@code data}, or null when it was rejected or is a fragment of one not yet whole. */
-    Envelope decode(Address from, byte[] data) {
+    /**
+     * The message in {@code data}, or null when it was rejected or is a fragment of one not yet whole;
+     * {@code proven} is the sender the transport proved (null on a plain transport), the sender of a
+     * header that leaves it out.
+     */
+    Envelope decode(String proven, Address from, byte[] data) {
         counters.datagramsReceived++;
-        DecodeResult result = decoder.decode(data);
+        DecodeResult result = decoder.decode(proven, data, 0, data.length);
         if (result instanceof DecodeResult.Decoded d) {
             return d.envelope();
         }

@@ -48,7 +48,12 @@ final class CapabilityBodies {
             r.take(form.position() - r.position(), field);
             return value;
         } catch (CapabilityFormatException e) {
-            throw new DecodeException(RejectReason.MALFORMED, field + ": " + e.getMessage());
+            RejectReason reason = switch (e.problem()) {
+                case TRUNCATED -> RejectReason.TRUNCATED;
+                case OVERSIZED -> RejectReason.OVERSIZED;
+                case MALFORMED -> RejectReason.MALFORMED;
+            };
+            throw new DecodeException(reason, field + ": " + e.getMessage());
         }
     }
 }

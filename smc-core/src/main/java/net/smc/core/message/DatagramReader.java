@@ -63,6 +63,12 @@ final class DatagramReader extends ByteReader<DecodeException> {
         return string(field, length8(field), max);
     }
 
+    /** A string with a one-byte length, at most {@code max} bytes, or null when its length is 0. */
+    String senderOrNone(String field, int max) throws DecodeException {
+        int len = length8(field);
+        return len == 0 ? null : string(field, len, max);
+    }
+
     /** A string with a two-byte length, at most {@code max} bytes. */
     String string16(String field, int max) throws DecodeException {
         return string(field, length16(field), max);

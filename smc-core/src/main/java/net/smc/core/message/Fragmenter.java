@@ -62,8 +62,7 @@ final class Fragmenter {
         int count = count(total, capacity(senderBytes));
         for (int i = 0; i < count; i++) {
             int len = chunkLength(i, count, total);
-            int p = Header.write(datagram, 0, WireFormat.FRAGMENT_CODE, sender, senderBytes, id,
-                    WireFormat.FRAGMENT_HEADER + len);
+            int p = Header.write(datagram, 0, WireFormat.FRAGMENT_CODE, sender, senderBytes, id);
             datagram[p] = (byte) type.code();
             ByteWriter.putU16(datagram, p + 1, i);
             ByteWriter.putU16(datagram, p + 3, count);

@@ -88,6 +88,18 @@ public final class MessageDecoder {
      * @throws IndexOutOfBoundsException if the range is not inside the array (a caller's bug, not bad input)
      */
     public DecodeResult decode(byte[] data, int offset, int length) {
+        return decode(null, data, offset, length);
+    }
+
+    /**
+     * Decodes {@code data[offset, offset + length)} as one datagram that came over a transport
+     * naming its sender {@code namedSender} (proven by an authenticating transport; null when the
+     * transport names none): a header that leaves its sender out takes this one, and one that names
+     * its own keeps it (the caller compares the two). The array is only read, and not kept.
+     *
+     * @throws IndexOutOfBoundsException if the range is not inside the array (a caller's bug, not bad input)
+     */
+    public DecodeResult decode(String namedSender, byte[] data, int offset, int length) {
         Objects.checkFromIndexSize(offset, length, data.length);
         header.sender = null;
         reassembled = null;
@@ -98,7 +110,9 @@ public final class MessageDecoder {
             if (length > WireFormat.MAX_DATAGRAM) {
                 throw new DecodeException(RejectReason.OVERSIZED, tooLarge(length));
             }
-            boolean sharing = shared != null && length > WireFormat.FIXED_HEADER && SharedDecodes.keeps(data[offset + 3] & 0xFF);
+            // only a datagram that names its sender is a function of its bytes alone
+            boolean sharing = shared != null && length > WireFormat.FIXED_HEADER && SharedDecodes.keeps(data[offset + 3] & 0xFF)
+                    && data[offset + 4] != 0;
             if (sharing) {
                 DecodeResult.Decoded known = shared.find(data, offset, length);
                 if (known != null) {
@@ -107,7 +121,7 @@ public final class MessageDecoder {
                 }
             }
             reader.reset(data, offset, offset + length);
-            header.read(reader);
+            header.read(reader, namedSender);
             if (header.typeCode == WireFormat.FRAGMENT_CODE) {
                 return fragment();
             }

@@ -2,7 +2,9 @@ package net.smc.core.message;
 
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import net.smc.core.wire.ByteWriter;
 
 /**
@@ -17,6 +19,10 @@ import net.smc.core.wire.ByteWriter;
  * KiB of which a heartbeat touches a hundred bytes. An encode that starts while another on the
  * same thread still has the buffer (a sink that sends again at once) gets a buffer of its own. An
  * encoder is not thread-safe (its counters): one per cell, used on the cell's thread.
+ *
+ * <p>Every header names its sender unless told otherwise: a cell whose transport proves who sent
+ * each datagram leaves the sender of the types it chooses to that transport
+ * ({@link #leaveSenderToTransport}), and its receivers take the sender their transport proves.
  */
 public final class MessageEncoder {
     /** Room for the largest header in front of the payload. */
@@ -27,6 +33,8 @@ public final class MessageEncoder {
 
     private final int datagramLimit;
     private final Fragmenter fragmenter;
+    /** The types whose header leaves the sender to the transport. */
+    private final Set<MessageType> senderLeft = EnumSet.noneOf(MessageType.class);
     /** The scratch of the thread this encoder last ran on: found again without the thread-local's look-up. */
     private Scratch recent;
     private long messages;
@@ -55,6 +63,21 @@ public final class MessageEncoder {
     }
 
     /**
+     * Leaves the sender of messages of {@code types} out of their headers, to be named by the
+     * transport on the receiving side (sender length 0 in <a href="doc-files/wire-format.md">the
+     * wire format</a>); the other types still name it. For an authenticating transport, whose
+     * receivers take the proven sender from it: a receiver with none refuses such a datagram, so
+     * leave out only what is read after the transport has proven its sender.
+     *
+     * @return this encoder
+     */
+    public MessageEncoder leaveSenderToTransport(Set<MessageType> types) {
+        senderLeft.clear();
+        senderLeft.addAll(types);
+        return this;
+    }
+
+    /**
      * Encodes a message that fits one datagram into {@code out}, from its position, and advances
      * the position past it.
      *
@@ -66,7 +89,8 @@ public final class MessageEncoder {
     public int encode(Envelope envelope, ByteBuffer out) {
         Scratch scratch = acquire();
         try {
-            int senderBytes = Utf8.length(envelope.sender());
+            String sender = named(envelope);
+            int senderBytes = sender == null ? 0 : Utf8.length(sender);
             int payload = writePayload(scratch, envelope);
             int headerLength = Header.length(senderBytes);
             int size = headerLength + payload;
@@ -80,8 +104,7 @@ public final class MessageEncoder {
                         + " bytes left; the datagram needs " + size);
             }
             int start = HEADROOM - headerLength;
-            Header.write(scratch.bytes, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(),
-                    payload);
+            Header.write(scratch.bytes, start, envelope.type().code(), sender, senderBytes, envelope.id());
             out.put(scratch.bytes, start, size);
             messages++;
             datagrams++;
@@ -101,21 +124,21 @@ public final class MessageEncoder {
     public int encode(Envelope envelope, DatagramSink sink) {
         Scratch scratch = acquire();
         try {
-            int senderBytes = Utf8.length(envelope.sender());
+            String sender = named(envelope);
+            int senderBytes = sender == null ? 0 : Utf8.length(sender);
             int payload = writePayload(scratch, envelope);
             int headerLength = Header.length(senderBytes);
             messages++;
             if (headerLength + payload <= datagramLimit) {
                 int start = HEADROOM - headerLength;
-                Header.write(scratch.bytes, start, envelope.type().code(), envelope.sender(), senderBytes, envelope.id(),
-                        payload);
+                Header.write(scratch.bytes, start, envelope.type().code(), sender, senderBytes, envelope.id());
                 scratch.view.clear().position(start).limit(start + headerLength + payload);
                 datagrams++;
                 sink.datagram(scratch.view);
                 return 1;
             }
             fragmented++;
-            int n = fragmenter.emit(scratch.bytes, HEADROOM, payload, envelope.type(), envelope.sender(), senderBytes,
+            int n = fragmenter.emit(scratch.bytes, HEADROOM, payload, envelope.type(), sender, senderBytes,
                     envelope.id(), sink);
             datagrams += n;
             return n;
@@ -148,6 +171,11 @@ public final class MessageEncoder {
     /** Messages that needed fragments. */
     public long fragmentedMessages() {
         return fragmented;
+    }
+
+    /** The sender the header names, or null when it is left to the transport. */
+    private String named(Envelope envelope) {
+        return senderLeft.contains(envelope.type()) ? null : envelope.sender();
     }
 
     /** The thread's scratch, lent to this encode; a fresh one if it is lent already. */

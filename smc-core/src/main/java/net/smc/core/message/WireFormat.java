@@ -11,8 +11,8 @@ package net.smc.core.message;
 public final class WireFormat {
     /** The first two bytes of every datagram, "SM". */
     public static final int MAGIC = 0x534D;
-    /** The only format version this build reads and writes. */
-    public static final int VERSION = 1;
+    /** The only format version this build reads and writes (version 1 had a payload length and always named the sender). */
+    public static final int VERSION = 2;
     /**
      * The type code of a fragment frame (one piece of a message too large for one datagram).
      * Never assigned to a {@link MessageType}.
@@ -21,8 +21,8 @@ public final class WireFormat {
 
     /** The largest datagram written or accepted: below a typical 1,500-byte MTU with IP/UDP headers. */
     public static final int MAX_DATAGRAM = 1_400;
-    /** Header bytes other than the sender: magic 2, version 1, type 1, sender length 1, id 8, payload length 2. */
-    public static final int FIXED_HEADER = 15;
+    /** Header bytes other than the sender: magic 2, version 1, type 1, sender length 1, id 8; the payload is the rest. */
+    public static final int FIXED_HEADER = 13;
     /** Bytes of a fragment frame's own header: original type 1, index 2, count 2, total length 4. */
     public static final int FRAGMENT_HEADER = 9;
     /** The largest payload of one message, reassembled from fragments when it exceeds one datagram. */

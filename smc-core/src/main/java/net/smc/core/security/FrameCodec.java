@@ -5,7 +5,7 @@ import net.smc.core.wire.ByteWriter;
 import net.smc.core.wire.WireProblem;
 
 /**
- * The wire form of protected datagrams, version 2: what {@link SecureEndpoint} puts around a
+ * The wire form of protected datagrams, version 3: what {@link SecureEndpoint} puts around a
  * payload and reads back. Every datagram starts with the version and a kind byte; integers are
  * big-endian; a name is one length byte (1..64) then UTF-8; "cred" is a credential in its binary
  * form ({@code CredentialCodec}) after one length byte.
@@ -14,8 +14,8 @@ import net.smc.core.wire.WireProblem;
  * kind          layout after version and kind                                tag
  * 1 SIGNED      ctr:6 cred payload                                            Ed25519 sig:64
  * 2 HELLO       ctr:6 cred recipient:name eph:32 echo:32                      Ed25519 sig:64
- * 3 PAIR_MAC    sender:name ctr:6 payload                                     HMAC-SHA256/128:16
- * 4 TEAM_MAC    teamKeyId:4 sender:name ctr:6 payload                         HMAC-SHA256/128:16
+ * 3 PAIR_MAC    sender:name ctr:6 payload                                     HMAC-SHA256/80:10
+ * 4 TEAM_MAC    teamKeyId:4 sender:name ctr:6 payload                         HMAC-SHA256/80:10
  * 5 TEAM_KEY    sender:name ctr:6 AES-256-GCM(team key:32), tag:16            (GCM tag)
  * </pre>
  *
@@ -36,7 +36,7 @@ import net.smc.core.wire.WireProblem;
  * the key proves it.
  */
 final class FrameCodec {
-    static final int VERSION = 2;
+    static final int VERSION = 3;
     static final int SIGNED = 1;
     static final int HELLO = 2;
     static final int PAIR_MAC = 3;

@@ -119,7 +119,7 @@ public final class SecureTransport implements AuthenticatingTransport {
     }
 
     /**
-     * Broadcasts {@code data} under the team key: 16 bytes of MAC instead of 64 of signature and a
+     * Broadcasts {@code data} under the team key: 10 bytes of MAC instead of 64 of signature and a
      * credential, for traffic only team members need.
      *
      * @throws IllegalStateException    when the endpoint holds no team key

@@ -82,8 +82,8 @@ class CodecRoundTripTest {
         Envelope e = new Envelope(Samples.ascii(64), 1, new Acks(Samples.maxAcks()));
         List<byte[]> datagrams = codec.encode(e);
         assertEquals(1, datagrams.size());
-        // header 15 + sender 64, count 1, 128 ids of 8 bytes
-        assertEquals(15 + 64 + 1 + 8 * WireFormat.MAX_ACKS, datagrams.get(0).length);
+        // header 13 + sender 64, count 1, 128 ids of 8 bytes
+        assertEquals(13 + 64 + 1 + 8 * WireFormat.MAX_ACKS, datagrams.get(0).length);
         assertTrue(datagrams.get(0).length <= WireFormat.MAX_DATAGRAM);
         assertEquals(e, codec.roundTrip(e));
     }
@@ -91,8 +91,8 @@ class CodecRoundTripTest {
     @Test
     void aDatagramOfExactly1400Bytes_isNotFragmented_and1401Are() {
         String sender = Samples.ascii(64);
-        // RoleEvent payload: role 1+1, event 1+1, one string value 1+1+2+n, origin 1; header 15+64.
-        int text = WireFormat.MAX_DATAGRAM - (15 + 64) - (6 + 3);
+        // RoleEvent payload: role 1+1, event 1+1, one string value 1+1+2+n, origin 1; header 13+64.
+        int text = WireFormat.MAX_DATAGRAM - (13 + 64) - (6 + 3);
         Envelope fits = new Envelope(sender, 1, Samples.bulk("r", text));
         assertEquals(WireFormat.MAX_DATAGRAM, codec.datagram(fits).length);
         assertEquals(fits, codec.roundTrip(fits));
@@ -107,7 +107,7 @@ class CodecRoundTripTest {
     void aMessageOf20KB_isFragmentedAndReassembled() {
         Envelope e = new Envelope("uav1", 77, Samples.bulk("relay", 20_000));
         List<byte[]> datagrams = codec.encode(e);
-        assertEquals(15, datagrams.size());  // 20,025 payload bytes, 1,372 per fragment
+        assertEquals(15, datagrams.size());  // 20,025 payload bytes, 1,374 per fragment
         datagrams.forEach(d -> assertTrue(d.length <= WireFormat.MAX_DATAGRAM));
         assertEquals(e, codec.roundTrip(e));
         assertEquals(0, codec.decoder.reassembliesInProgress());
@@ -152,7 +152,7 @@ class CodecRoundTripTest {
         Envelope e = new Envelope("uav1", 8, new Heartbeat("relay", 1, 1));
         ByteBuffer buf = ByteBuffer.allocate(10);
         IllegalArgumentException ex = assertThrows(IllegalArgumentException.class, () -> codec.encoder.encode(e, buf));
-        assertEquals("HEARTBEAT from 'uav1' (id 8): the buffer has 10 bytes left; the datagram needs 28",
+        assertEquals("HEARTBEAT from 'uav1' (id 8): the buffer has 10 bytes left; the datagram needs 26",
                 ex.getMessage());
     }
 

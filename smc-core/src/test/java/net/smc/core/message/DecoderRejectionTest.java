@@ -50,16 +50,16 @@ class DecoderRejectionTest {
     void foreignMagic_isBadMagic() {
         Raw raw = heartbeat();
         raw.magic = 0x4745;
-        reject(raw.datagram(), RejectReason.BAD_MAGIC, "datagram of 28 bytes: magic is 0x4745; a datagram starts with"
+        reject(raw.datagram(), RejectReason.BAD_MAGIC, "datagram of 26 bytes: magic is 0x4745; a datagram starts with"
                 + " 0x534D");
     }
 
     @Test
     void laterVersion_isUnknownVersion() {
         Raw raw = heartbeat();
-        raw.version = 2;
-        reject(raw.datagram(), RejectReason.UNKNOWN_VERSION, "datagram of 28 bytes: version is 2; this build reads"
-                + " version 1");
+        raw.version = 3;
+        reject(raw.datagram(), RejectReason.UNKNOWN_VERSION, "datagram of 26 bytes: version is 3; this build reads"
+                + " version 2");
     }
 
     @Test
@@ -67,7 +67,7 @@ class DecoderRejectionTest {
         for (int code : new int[] {0x00, 0x16, 0xFE}) {
             Raw raw = heartbeat();
             raw.type = code;
-            reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 28 bytes: type code 0x%02X is"
+            reject(raw.datagram(), RejectReason.UNKNOWN_TYPE, String.format("datagram of 26 bytes: type code 0x%02X is"
                     + " not assigned to a message type", code));
         }
     }
@@ -76,32 +76,33 @@ class DecoderRejectionTest {
     void senderOver64Bytes_isOversized() {
         Raw raw = heartbeat();
         raw.sender = new byte[65];
-        reject(raw.datagram(), RejectReason.OVERSIZED, "datagram of 89 bytes: sender is 65 bytes; at most 64 are"
+        reject(raw.datagram(), RejectReason.OVERSIZED, "datagram of 87 bytes: sender is 65 bytes; at most 64 are"
                 + " allowed");
     }
 
     @Test
-    void emptySender_isAnInvalidField() {
+    void senderLeftToTheTransport_withoutANamedSender_isMalformed() {
         Raw raw = heartbeat();
         raw.sender = new byte[0];
-        reject(raw.datagram(), RejectReason.INVALID_FIELD, "HEARTBEAT from '' (id 7): Envelope.sender '' is 0 UTF-8"
-                + " bytes; a vehicle id must be 1 to 64 bytes");
+        reject(raw.datagram(), RejectReason.MALFORMED, "datagram of 22 bytes: the sender length is 0, which leaves the"
+                + " sender to a transport that proves it, and this datagram came without one");
     }
 
     @Test
-    void payloadLengthBeyondTheDatagram_isTruncated() {
+    void senderLeftToTheTransport_isTheSenderItNames() {
         Raw raw = heartbeat();
-        raw.declaredLength = 10;
-        reject(raw.datagram(), RejectReason.TRUNCATED, "HEARTBEAT from 'uav1' (id 7): payload length is 10 but 9"
-                + " bytes follow the header");
+        raw.sender = new byte[0];
+        byte[] d = raw.datagram();
+        Envelope e = Codec.decoded(codec.decoder.decode("uav9", d, 0, d.length));
+        assertEquals("uav9", e.sender());
+        assertEquals(new Heartbeat("relay", 1, 0), e.body());
     }
 
     @Test
-    void payloadLengthShortOfTheDatagram_isMalformed() {
-        Raw raw = heartbeat();
-        raw.declaredLength = 8;
-        reject(raw.datagram(), RejectReason.MALFORMED, "HEARTBEAT from 'uav1' (id 7): payload length is 8 but 9"
-                + " bytes follow the header");
+    void aHeaderThatNamesItsSender_keepsIt_whateverTheTransportNames() {
+        byte[] d = heartbeat().datagram();
+        assertEquals("uav1", Codec.decoded(codec.decoder.decode("uav9", d, 0, d.length)).sender(),
+                "the Communication-Manager compares the two and drops a message whose names differ");
     }
 
     @Test

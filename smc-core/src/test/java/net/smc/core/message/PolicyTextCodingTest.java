@@ -57,8 +57,8 @@ class PolicyTextCodingTest {
         byte[] d = codec.datagram(e);
         int text = MISSION.getBytes(StandardCharsets.UTF_8).length;
         assertTrue(text > 1_500, text + " bytes");
-        // Header 15 + sender 6, the payload before the text 8 + 27 + 4, length 2 and coding 1.
-        int textAt = 15 + 6 + 8 + 27 + 4;
+        // Header 13 + sender 6, the payload before the text 8 + 27 + 4, length 2 and coding 1.
+        int textAt = WireFormat.FIXED_HEADER + 6 + 8 + 27 + 4;
         assertEquals(WireFormat.POLICY_TEXT_DEFLATE_DICTIONARY, d[textAt + 2]);
         int deflated = (d[textAt + 3] & 0xFF) << 8 | d[textAt + 4] & 0xFF;
         assertEquals(d.length, textAt + 5 + deflated);
@@ -93,8 +93,8 @@ class PolicyTextCodingTest {
         }
         Envelope e = new Envelope("uav1", 7, new PolicyReply(1, "u", 1, sb.toString()));
         byte[] d = codec.datagram(e);
-        assertEquals(WireFormat.POLICY_TEXT_PLAIN, d[15 + 4 + BEFORE_TEXT + 2]);
-        assertEquals(15 + 4 + BEFORE_TEXT + 3 + 100, d.length);
+        assertEquals(WireFormat.POLICY_TEXT_PLAIN, d[WireFormat.FIXED_HEADER + 4 + BEFORE_TEXT + 2]);
+        assertEquals(WireFormat.FIXED_HEADER + 4 + BEFORE_TEXT + 3 + 100, d.length);
         assertEquals(e, Codec.decoded(codec.decode(d)));
     }
 
@@ -218,7 +218,7 @@ class PolicyTextCodingTest {
         Envelope e = new Envelope("uav1", 3, new PolicyReply(1, "u", 1, MISSION));
         byte[] d = codec.datagram(e);
         int refused = 0;
-        int textAt = 15 + 4 + BEFORE_TEXT;
+        int textAt = WireFormat.FIXED_HEADER + 4 + BEFORE_TEXT;
         for (int bit = textAt * 8; bit < d.length * 8; bit++) {
             byte[] flipped = d.clone();
             flipped[bit >>> 3] ^= (byte) (1 << (bit & 7));

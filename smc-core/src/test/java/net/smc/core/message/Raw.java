@@ -13,8 +13,6 @@ final class Raw {
     int type;
     byte[] sender = "uav1".getBytes(StandardCharsets.UTF_8);
     long id = 7;
-    /** The payload length written in the header; -1 for the real one. */
-    int declaredLength = -1;
     private final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
     private final DataOutputStream payload = new DataOutputStream(bytes);
 
@@ -67,7 +65,6 @@ final class Raw {
             d.writeByte(sender.length);
             d.write(sender);
             d.writeLong(id);
-            d.writeShort(declaredLength < 0 ? p.length : declaredLength);
             d.write(p);
         } catch (IOException e) {
             throw new UncheckedIOException(e);

@@ -298,10 +298,10 @@ class SessionTest {
     }
 
     @Test
-    void pairOverhead_is25BytesPlusTheSenderId() {
+    void pairOverhead_is19BytesPlusTheSenderId() {
         Team.shakeHands(a, b);
 
-        assertEquals(25 + "uav-a".length(), a.overhead(Protection.PAIR_MAC));
-        assertEquals(heartbeat.length + 30, a.wrapFor("uav-b", heartbeat).length);
+        assertEquals(19 + "uav-a".length(), a.overhead(Protection.PAIR_MAC));
+        assertEquals(heartbeat.length + 24, a.wrapFor("uav-b", heartbeat).length);
     }
 }

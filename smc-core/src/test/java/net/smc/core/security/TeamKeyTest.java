@@ -158,11 +158,11 @@ class TeamKeyTest {
     }
 
     @Test
-    void teamOverhead_is29BytesPlusTheSenderId() {
+    void teamOverhead_is23BytesPlusTheSenderId() {
         handOut();
 
-        assertEquals(29 + "uav-b".length(), b.overhead(Protection.TEAM_MAC));
-        assertEquals(status.length + 34, b.wrapTeam(status).length);
+        assertEquals(23 + "uav-b".length(), b.overhead(Protection.TEAM_MAC));
+        assertEquals(status.length + 28, b.wrapTeam(status).length);
     }
 
     private static int indexOf(byte[] haystack, byte[] needle) {
