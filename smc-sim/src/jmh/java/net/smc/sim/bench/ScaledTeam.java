@@ -2,7 +2,6 @@ package net.smc.sim.bench;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
@@ -179,9 +178,12 @@ final class ScaledTeam {
     private final class Counting implements NetworkObserver {
         /**
          * Per sending address, the bytes the real security envelopes add round a payload:
-         * {@code PAIR_MAC} then {@code SIGNED}; read once from the sender named in its first datagram.
+         * {@code PAIR_MAC} then {@code SIGNED}; found once per address, from the vehicle there (most
+         * headers leave the sender to the transport).
          */
         private final Map<Address, int[]> envelopes = new HashMap<>();
+        /** Each vehicle's address, gathered at the first datagram. */
+        private final Map<Address, String> vehicleAt = new HashMap<>();
 
         @Override
         public void sent(long atMillis, Address from, Address to, byte[] data) {
@@ -199,11 +201,15 @@ final class ScaledTeam {
         private long wireLength(Address from, Address to, byte[] data) {
             boolean sealed = data.length >= IdealAuthentication.SEAL_BYTES + 5
                     && data[IdealAuthentication.PAYLOAD_OFFSET] == 'S' && data[IdealAuthentication.PAYLOAD_OFFSET + 1] == 'M';
-            int at = sealed ? IdealAuthentication.PAYLOAD_OFFSET : 0;
             int payload = sealed ? data.length - IdealAuthentication.SEAL_BYTES : data.length;
             int[] envelope = envelopes.computeIfAbsent(from, a -> {
-                int n = data.length > at + 4 ? Math.min(data[at + 4] & 0xFF, data.length - at - 5) : 0;
-                String sender = new String(data, at + 5, Math.max(0, n), StandardCharsets.UTF_8);
+                if (vehicleAt.isEmpty()) {
+                    sim.vehicles().forEach(v -> vehicleAt.put(sim.address(v.id()), v.id()));
+                }
+                String sender = vehicleAt.get(a);
+                if (sender == null) {
+                    throw new IllegalStateException("no vehicle at " + a);
+                }
                 return new int[] {WireSizes.pairMac(sender, 0), WireSizes.signed(sender, missionName, 0)};
             });
             return payload + envelope[to == null ? 1 : 0];

@@ -148,8 +148,11 @@ public final class CpuCharge implements CpuModel {
     public long sendMicros(Address at, Address to, byte[] data) {
         Node node = node(at);
         if (node.vehicle == null) {
-            node.vehicle = sender(data);
-            ledger.name(node.number, node.vehicle);
+            String named = sender(data);   // "" while it sends only what leaves its sender to the transport
+            if (!named.isEmpty()) {
+                node.vehicle = named;
+                ledger.name(node.number, named);
+            }
         }
         int type = type(data);
         int payload = Math.max(0, data.length - sealBytes);
@@ -166,10 +169,10 @@ public final class CpuCharge implements CpuModel {
         Node peer = to == null ? null : node(to);
         Handshake h = peer == null ? null : handshake(node, peer);
         if (h != null && h.hasSession(node)) {
-            message = WireSizes.pairMac(node.vehicle, payload);
+            message = WireSizes.pairMac(node.vehicle == null ? "" : node.vehicle, payload);
             ns += charge(node, Category.MAC, mac(data.length));
         } else {
-            message = WireSizes.signed(node.vehicle, mission, payload);
+            message = WireSizes.signed(node.vehicle == null ? "" : node.vehicle, mission, payload);
             ns += charge(node, Category.SIGN, costs.signNanos());
             if (h != null && h.steps == 0 && type != MessageType.DISCOVERY_REPLY.code()
                     && type != MessageType.WITHDRAWAL.code()) {
@@ -360,7 +363,7 @@ public final class CpuCharge implements CpuModel {
         if (type != WireFormat.FRAGMENT_CODE) {
             return type;
         }
-        int payload = at + SENDER_LENGTH_OFFSET + 1 + (data[at + SENDER_LENGTH_OFFSET] & 0xFF) + 8 + 2;
+        int payload = at + WireFormat.FIXED_HEADER + (data[at + SENDER_LENGTH_OFFSET] & 0xFF);
         return payload < data.length ? data[payload] & 0xFF : -1;
     }
 
@@ -417,7 +420,7 @@ public final class CpuCharge implements CpuModel {
         return id;
     }
 
-    /** The vehicle named as a datagram's sender, or "" if unreadable. */
+    /** The vehicle named as a datagram's sender, or "" if unreadable or left to the transport. */
     String sender(byte[] data) {
         int at = payloadOffset;
         if (data.length <= at + SENDER_LENGTH_OFFSET) {
@@ -426,6 +429,17 @@ public final class CpuCharge implements CpuModel {
         int n = data[at + SENDER_LENGTH_OFFSET] & 0xFF;
         return n <= data.length - at - SENDER_LENGTH_OFFSET - 1
                 ? new String(data, at + SENDER_LENGTH_OFFSET + 1, n, StandardCharsets.UTF_8) : "";
+    }
+
+    /**
+     * Names the vehicle at {@code address}, whose envelopes' sizes follow from its name. Without it
+     * the name is read from the first datagram that names its sender in its header (a discovery or
+     * its reply: the other types leave it to the transport).
+     */
+    public void name(Address address, String vehicle) {
+        Node node = node(address);
+        node.vehicle = Objects.requireNonNull(vehicle, "vehicle");
+        ledger.name(node.number, vehicle);
     }
 
     private Node node(Address address) {

@@ -78,6 +78,7 @@ public final class SetupTimeRun {
         CpuCharge charge = new CpuCharge(costs, mission.instanceName(), v -> generated.newUavPolicies(v, scheme), generated::loadsPolicy,
                 IdealAuthentication.PAYLOAD_OFFSET, auth::dropsUnverified, auth::holdsUnverified);
         auth.onHeldChecked(charge::heldChecked);
+        sim.vehicles().forEach(v -> charge.name(sim.address(v.id()), v.id()));
         InMemoryNetwork network = sim.network();
         network.setCpuModel(charge);
         network.setBandwidth(radio.bytesPerSecond());

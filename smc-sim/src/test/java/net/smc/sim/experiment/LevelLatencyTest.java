@@ -49,12 +49,18 @@ class LevelLatencyTest {
         final Map<String, Long> firstDiscovery = new HashMap<>();
         /** When copies of each vehicle's discovery broadcasts arrived. */
         final Map<String, List<Long>> discoveries = new HashMap<>();
+        /** Each vehicle's address: the transport names the sender, which most headers leave out. */
+        private final Map<Address, String> vehicleAt = new HashMap<>();
+
+        Counts(TeamSimulation sim) {
+            sim.vehicles().forEach(v -> vehicleAt.put(sim.address(v.id()), v.id()));
+        }
 
         @Override
         public void delivered(long atMillis, Address from, Address to, byte[] data) {
             int type = parse.type(data);
             if (type >= 0) {
-                String sender = parse.sender(data);
+                String sender = vehicleAt.getOrDefault(from, "?");
                 bySender.computeIfAbsent(sender, v -> new HashMap<>()).merge(MessageType.fromCode(type), 1, Integer::sum);
                 if (type == MessageType.DISCOVERY.code()) {
                     firstDiscovery.putIfAbsent(sender, atMillis);
@@ -113,7 +119,7 @@ class LevelLatencyTest {
         CpuCosts slowLoading = new CpuCosts(0, 0, 0, 0, 0, 0, 0, 20_000, 0, 0, 0);
         sim.network().setCpuModel(new CpuCharge(slowLoading, "Generated" + ROLES, v -> g.newUavPolicies(v, Scheme.DISTRIBUTED), g::loadsPolicy,
                 IdealAuthentication.PAYLOAD_OFFSET));
-        Counts counts = new Counts();
+        Counts counts = new Counts(sim);
         sim.network().addObserver(counts);
         sim.start();
         assertTrue(sim.runUntil(() -> started(events).size() == ROLES - 1, 10_000), () -> String.join("\n", sim.trace()));
@@ -150,7 +156,7 @@ class LevelLatencyTest {
             TeamSimulation sim = TeamSimulation.builder(mission, new PolicyRepository(g.repository()), seed)
                     .vehicles(g.vehicles()).scheme(Scheme.DISTRIBUTED).link(LinkProfile.fixed(3).withLatency(3, 2))
                     .listener(events::add).build();
-            Counts counts = new Counts();
+            Counts counts = new Counts(sim);
             sim.network().addObserver(counts);
             sim.start();
             assertTrue(sim.runUntil(() -> started(events).size() == ROLES - 1, 10_000), () -> String.join("\n", sim.trace()));
@@ -194,7 +200,7 @@ class LevelLatencyTest {
             sim.network().setCpuModel(new CpuCharge(FIG8_COSTS, mission.instanceName(), v -> g.newUavPolicies(v, Scheme.DISTRIBUTED),
                     g::loadsPolicy, IdealAuthentication.PAYLOAD_OFFSET));
             sim.network().setBandwidth(RadioNetwork.ADHOC_80211.bytesPerSecond());
-            Counts counts = new Counts();
+            Counts counts = new Counts(sim);
             sim.network().addObserver(counts);
             sim.start();
             assertTrue(sim.runUntil(() -> started(events).size() == 49, 20_000), () -> String.join("\n", sim.trace()));
@@ -241,7 +247,7 @@ class LevelLatencyTest {
         GeneratedMission g = generated();
         List<CellEvent> events = new ArrayList<>();
         TeamSimulation sim = team(g, events, LinkProfile.fixed(3).withLatency(3, 2));
-        Counts counts = new Counts();
+        Counts counts = new Counts(sim);
         sim.network().addObserver(counts);
         sim.start();
         assertTrue(sim.runUntil(() -> started(events).size() == ROLES - 1, 10_000), () -> String.join("\n", sim.trace()));

@@ -46,8 +46,8 @@ class RosterTrafficTest {
             @Override
             public void sent(long atMillis, Address from, Address to, byte[] data) {
                 if (from.equals(commander)) {
-                    // the seal: a counter before the message, a tag after it
-                    if (decoder.decode(data, IdealAuthentication.PAYLOAD_OFFSET, data.length - IdealAuthentication.SEAL_BYTES)
+                    // the seal: a counter before the message, a tag after it; the transport names the sender
+                    if (decoder.decode(GeneratedMission.COMMANDER, data, IdealAuthentication.PAYLOAD_OFFSET, data.length - IdealAuthentication.SEAL_BYTES)
                             instanceof DecodeResult.Decoded d && d.envelope().body() instanceof Roster r) {
                         rosters.add(r);
                     }

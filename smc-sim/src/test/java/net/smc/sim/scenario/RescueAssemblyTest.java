@@ -46,22 +46,25 @@ class RescueAssemblyTest {
         team.network().addObserver(new NetworkObserver() {
             @Override
             public void delivered(long atMillis, Address from, Address to, byte[] data) {
-                seen(atMillis, data);
+                seen(atMillis, from, data);
             }
 
             @Override
             public void dropped(long atMillis, Address from, Address to, DropReason reason, byte[] data) {
-                seen(atMillis, data);
+                seen(atMillis, from, data);
             }
 
             /**
              * An ideally authenticated datagram is a counter, the envelope, and a tag of 8 bytes
              * each way; the counter's high bits are the mission time it was sent at.
              */
-            private void seen(long atMillis, byte[] data) {
+            private void seen(long atMillis, Address from, byte[] data) {
                 long sent = ByteBuffer.wrap(data).getLong(0) >> 20;
                 byte[] envelope = Arrays.copyOfRange(data, 8, data.length - 8);
-                if (decoder.decode(envelope) instanceof DecodeResult.Decoded d && ASSEMBLY.contains(d.envelope().type())) {
+                // the transport names the sender (the header leaves it out but for discoveries and their replies)
+                String sender = team.vehicles().stream().map(v -> v.id()).filter(v -> team.address(v).equals(from))
+                        .findFirst().orElse(null);
+                if (decoder.decode(sender, envelope, 0, envelope.length) instanceof DecodeResult.Decoded d && ASSEMBLY.contains(d.envelope().type())) {
                     assembly.add("sent " + sent + " ms: " + d.envelope().type() + " from " + d.envelope().sender());
                     first[0] = Math.min(first[0], sent);
                 }
