@@ -17,8 +17,8 @@ public enum RejectReason {
     UNKNOWN_TYPE,
     /**
      * The bytes break the encoding: bad UTF-8, an unassigned value tag, a boolean other than 0 or
-     * 1, a non-minimal number, an unsorted set, a payload length that disagrees with the datagram,
-     * bytes after the last field.
+     * 1, a non-minimal number, an unsorted set, bytes after the last field, a sender left to a
+     * transport that names none.
      */
     MALFORMED,
     /** The fields decode but break a rule of their message (a negative level, an empty name): the record refused them. */

@@ -75,9 +75,18 @@ class SharedDecodesTest {
     }
 
     @Test
+    void aDiscoveryThatLeavesItsSenderToTheTransport_isNotShared_forItsBytesDoNotNameIt() {
+        byte[] d = new MessageEncoder().leaveSenderToTransport(java.util.Set.of(MessageType.DISCOVERY))
+                .datagrams(new Envelope("cdr", 9, new Discovery("m", "cdr", 0, 3))).get(0);
+        assertEquals("cdr", Codec.decoded(decoder().decode("cdr", d, 0, d.length)).sender());
+        assertEquals("uav-2", Codec.decoded(decoder().decode("uav-2", d, 0, d.length)).sender());
+        assertEquals(0, table.hits() + table.misses());
+    }
+
+    @Test
     void aRejectedDiscoveryIsNotKept_soEachDecoderRejectsAndCountsIt() {
         byte[] d = datagram("cdr", 9, new Discovery("m", "cdr", 0, 3));
-        byte[] bad = java.util.Arrays.copyOf(d, d.length - 1); // the payload length now disagrees
+        byte[] bad = java.util.Arrays.copyOf(d, d.length - 1); // cut short: its last field is incomplete
         MessageDecoder a = decoder();
         MessageDecoder b = decoder();
         Codec.rejected(a.decode(bad));
