@@ -66,13 +66,29 @@ final class Codec {
      * text came as another deflater's stream, which must re-encode to the same message.
      */
     void checkInvariants(byte[] input, DecodeResult r) {
+        checkInvariants(input, r, null);
+    }
+
+    /**
+     * As {@link #checkInvariants(byte[], DecodeResult)}, for a decode given {@code namedSender} by
+     * the transport (null: none): a datagram that leaves its sender out decodes with that sender and
+     * re-encodes to its bytes when its type's sender is left to the transport.
+     */
+    void checkInvariants(byte[] input, DecodeResult r, String namedSender) {
         if (r instanceof DecodeResult.Rejected rej) {
             assertNotEquals(RejectReason.INTERNAL_ERROR, rej.reason(), rej.detail());
         } else if (r instanceof DecodeResult.Decoded d && input.length > 3 && (input[3] & 0xFF) != WireFormat.FRAGMENT_CODE) {
-            List<byte[]> again = encoder.datagrams(d.envelope());
+            boolean left = input.length > 4 && input[4] == 0;
+            if (left && !d.envelope().sender().equals(namedSender)) {
+                fail("decoded " + d.envelope() + " from a header without a sender, but the transport named " + namedSender);
+            }
+            MessageEncoder again0 = left
+                    ? new MessageEncoder().leaveSenderToTransport(java.util.Set.of(d.envelope().type())) : encoder;
+            List<byte[]> again = again0.datagrams(d.envelope());
             boolean same = again.size() == 1 && Arrays.equals(again.get(0), input);
             if (!same && d.envelope().body() instanceof PolicyReply) {
-                same = d.envelope().equals(decoded(new Codec().decode(again.get(0))));
+                byte[] first = again.get(0);
+                same = d.envelope().equals(decoded(new Codec().decoder.decode(namedSender, first, 0, first.length)));
             }
             if (!same) {
                 fail("decoded " + d.envelope() + " does not re-encode to its datagram");

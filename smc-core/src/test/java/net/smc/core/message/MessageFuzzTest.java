@@ -11,11 +11,13 @@ import com.code_intelligence.jazzer.junit.FuzzTest;
  */
 class MessageFuzzTest {
 
-    /** One datagram, as raw bytes. */
+    /** One datagram, as raw bytes: from a transport that names no sender, and from one that names one. */
     @FuzzTest(maxDuration = "2m")
     void decode(byte[] datagram) {
         Codec codec = new Codec();
         codec.checkInvariants(datagram, codec.decode(datagram));
+        Codec named = new Codec();
+        named.checkInvariants(datagram, named.decoder.decode("uav9", datagram, 0, datagram.length), "uav9");
     }
 
     /**
