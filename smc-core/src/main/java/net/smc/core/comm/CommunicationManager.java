@@ -38,7 +38,9 @@ import net.smc.core.transport.Transport;
  * semantics: one may be lost or, if the network duplicates it, dispatched twice.
  *
  * <p>On an {@link AuthenticatingTransport} the envelope's sender must be the proven sender: a
- * message whose envelope names another vehicle is dropped and counted as spoofed. Either way the
+ * message whose envelope names another vehicle is dropped and counted as spoofed. There the headers
+ * of the types chosen with {@link Builder#senderLeftToTransport} leave the sender out, and the
+ * receiving side takes the proven one. Either way the
  * manager remembers the address each vehicle last sent from ({@link #addressOf}), so that replies
  * and protocols can name peers by vehicle id.
  *
