@@ -312,12 +312,19 @@ final class Assignee {
         }
         boolean sameParent = st.parent != null && st.parent.vehicle().equals(in.from());
         List<Seat> before = sameParent ? List.copyOf(st.seats) : List.of();
-        // What the parent says this vehicle keeps from it, then its own (hosted) seats that still fit.
+        // What the parent says this vehicle keeps from it, then its own (hosted) seats that still fit
+        // and that a seat it still holds owns: a seat hosted as the manager of a seat given up now
+        // belongs to that seat's next holder, who hosts it or gives it.
         List<Seat> kept = before.stream().filter(s -> a.keeps().contains(s.toString())).toList();
         List<Seat> after = new ArrayList<>(ctx.slots().afterAssign(kept, seat));
-        for (Seat s : before) {
-            if (!kept.contains(s) && ownsItself(before, s) && ctx.canAlsoHold(after, s)) {
-                after.add(s);
+        boolean grew = true;
+        while (grew) {   // a hosted seat may own another hosted seat
+            grew = false;
+            for (Seat s : before) {
+                if (!after.contains(s) && ownsItself(after, s) && ctx.canAlsoHold(after, s)) {
+                    after.add(s);
+                    grew = true;
+                }
             }
         }
         if (before.stream().noneMatch(s -> s.role().equals(seat.role()))) {
