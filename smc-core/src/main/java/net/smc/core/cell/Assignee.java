@@ -84,7 +84,9 @@ final class Assignee {
         }
         Optional<Address> to = ctx.address(env.sender());
         if (to.isPresent()) {
-            ctx.sendWithoutHandshake(to.get(), new DiscoveryReply(env.id(), ctx.missionId(), ctx.description().summary()));
+            // A vehicle with a parent answers only as a candidate for a role ranked before its own: it says which it holds.
+            String holds = st.free() || st.seats.isEmpty() ? "" : st.seats.get(0).role();
+            ctx.sendWithoutHandshake(to.get(), new DiscoveryReply(env.id(), ctx.missionId(), holds, ctx.description().summary()));
             long now = ctx.clock().nowMillis();
             long window = ctx.timing().senderSettings().initialTimeoutMillis();
             st.answered.values().removeIf(x -> now - x.atMillis() > window);

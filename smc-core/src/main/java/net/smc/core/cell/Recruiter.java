@@ -107,7 +107,7 @@ final class Recruiter {
             return;
         }
         long now = ctx.clock().nowMillis();
-        st.heard.put(env.sender(), new Heard(r.summary(), now));
+        st.heard.put(env.sender(), new Heard(r.summary(), r.holds(), now));
         if (batches.isChecking(env.sender())) {
             return; // a held reply checked now: who asked for the check decides on it, and measures it
         }
@@ -158,11 +158,10 @@ final class Recruiter {
     }
 
     /**
-     * Checks held replies until one passes whose summary {@code wanted} accepts
-     * ({@link ReplyBatches#checkUntil}): for Supervisor's reassignment and swaps, which read the free
-     * vehicles heard of. Whether one was found.
+     * Checks held replies until one passes that {@code wanted} accepts ({@link ReplyBatches#checkUntil}):
+     * for Supervisor's reassignment and swaps, which read the free vehicles heard of. Whether one was found.
      */
-    boolean checkUntil(long windowMillis, Predicate<CapabilitySummary> wanted) {
+    boolean checkUntil(long windowMillis, Predicate<Heard> wanted) {
         return batches.checkUntil(windowMillis, wanted);
     }
 
@@ -213,9 +212,11 @@ final class Recruiter {
      * meets (vacant first, then by priority, as for a capability reply) goes to it now.
      */
     private void seatFromSummary(String uav, CapabilitySummary summary, Object credential, Set<String> roles) {
+        Heard heard = st.heard.get(uav);
         Optional<Seat> seat = st.owned.keySet().stream()
                 .filter(s -> roles.contains(s.role()) && st.open(s))
                 .filter(s -> ctx.slots().role(s.role()).requirement().isMetBy(summary))
+                .filter(s -> heard == null || TeamState.couldTake(heard, s.role(), ctx.slots()))
                 .min(this::preferVacant);
         if (seat.isEmpty()) {
             // No seat asked for that the vehicle can take: while the same stands, none would be found again.
@@ -301,10 +302,13 @@ final class Recruiter {
             known.description = full.summary(); // a child (from a roster, say): now this cell knows what it can do
             return;
         }
-        // Algorithm 2, line 3: the description must match the requirement of one of the roles.
+        // Algorithm 2, line 3: the description must match the requirement of one of the roles (and a
+        // vehicle that holds a role elsewhere takes only one ranked before it).
+        Heard answered = st.heard.get(env.sender());
         Optional<Seat> seat = st.owned.keySet().stream()
                 .filter(s -> pending.roles.contains(s.role()) && st.open(s))
                 .filter(s -> ctx.slots().role(s.role()).requirement().isMetBy(full))
+                .filter(s -> answered == null || TeamState.couldTake(answered, s.role(), ctx.slots()))
                 .min(this::preferVacant);
         if (seat.isEmpty()) {
             // Algorithm 2 found no seat asked for that the vehicle can take: while the same stands,

@@ -114,15 +114,15 @@ final class ReplyBatches {
 
     /**
      * Checks the replies held from vehicles that answered within {@code windowMillis}, in the order
-     * of their names, until one passes whose summary {@code wanted} accepts: for a choice that reads
-     * the free vehicles heard of (Supervisor's reassignment and swaps), which must see checked
-     * replies only. Whether one was found.
+     * of their names, until one passes that {@code wanted} accepts: for a choice that reads the free
+     * vehicles heard of (Supervisor's reassignment and swaps), which must see checked replies only.
+     * Whether one was found.
      */
-    boolean checkUntil(long windowMillis, Predicate<CapabilitySummary> wanted) {
+    boolean checkUntil(long windowMillis, Predicate<Heard> wanted) {
         long now = ctx.clock().nowMillis();
         for (String vehicle : st.unchecked.entrySet().stream().filter(e -> now - e.getValue().atMillis() <= windowMillis)
                 .map(Map.Entry::getKey).sorted().toList()) {
-            if (check(vehicle) && !st.children.containsKey(vehicle) && wanted.test(st.heard.get(vehicle).summary())) {
+            if (check(vehicle) && !st.children.containsKey(vehicle) && wanted.test(st.heard.get(vehicle))) {
                 return true;
             }
         }

@@ -5,9 +5,11 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Predicate;
 
 import net.smc.core.capability.CapabilitySummary;
 import net.smc.core.cell.TeamState.Child;
+import net.smc.core.cell.TeamState.Heard;
 import net.smc.core.cell.TeamState.Owned;
 import net.smc.core.cell.TeamState.PendingCapability;
 import net.smc.core.cell.TeamState.StatusContent;
@@ -302,7 +304,7 @@ final class Supervisor {
         MissionRole wanted = ctx.slots().role(role);
         long now = ctx.clock().nowMillis();
         Optional<String> free = freeFor(wanted, now);
-        if (free.isEmpty() && recruiter.checkUntil(ctx.timing().failureTimeoutMillis(), wanted.requirement()::isMetBy)) {
+        if (free.isEmpty() && recruiter.checkUntil(ctx.timing().failureTimeoutMillis(), couldTake(wanted))) {
             free = freeFor(wanted, now); // replies held unchecked, checked now: only checked ones are chosen from
         }
         if (free.isPresent()) {
@@ -380,12 +382,20 @@ final class Supervisor {
         return true;
     }
 
-    /** The first by name of the free vehicles heard lately (checked replies) that can take {@code wanted}. */
+    /** Whether a vehicle heard of can take a seat of {@code wanted}: able to, and free to ({@link TeamState#couldTake}). */
+    private Predicate<Heard> couldTake(MissionRole wanted) {
+        return h -> TeamState.couldTake(h, wanted.name(), ctx.slots()) && wanted.requirement().isMetBy(h.summary());
+    }
+
+    /**
+     * The first by name of the vehicles heard lately (checked replies) that can take {@code wanted}:
+     * free, or holding a role ranked after it elsewhere ({@link TeamState#couldTake}).
+     */
     private Optional<String> freeFor(MissionRole wanted, long now) {
         return st.heard.entrySet().stream()
                 .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
                 .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
-                .filter(e -> wanted.requirement().isMetBy(e.getValue().summary()))
+                .filter(e -> couldTake(wanted).test(e.getValue()))
                 .map(Map.Entry::getKey).sorted().findFirst();
     }
 
@@ -399,12 +409,13 @@ final class Supervisor {
         for (Seat open : st.owned.keySet().stream().filter(st::open).sorted(ctx.slots()::compare).toList()) {
             MissionRole wanted = ctx.slots().role(open.role());
             if (freeFor(wanted, now).isPresent()
-                    || recruiter.checkUntil(ctx.timing().failureTimeoutMillis(), wanted.requirement()::isMetBy)) {
+                    || recruiter.checkUntil(ctx.timing().failureTimeoutMillis(), couldTake(wanted))) {
                 continue; // discovery will fill it directly
             }
             List<CapabilitySummary> free = st.heard.entrySet().stream()
                     .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
                     .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
+                    .filter(e -> e.getValue().free())
                     .map(e -> e.getValue().summary()).toList();
             if (st.owned.get(open).holder == null && promoteChild(open)) {
                 return;

@@ -161,7 +161,22 @@ final class TeamState {
     record ParkedRequest(Address from, long envelopeId, int version, long atMillis) {
     }
 
-    record Heard(CapabilitySummary summary, long atMillis) {
+    /**
+     * A checked discovery reply: what the vehicle can do, the role it holds now (empty when it is
+     * free; else it takes only a seat of a role ranked before it, {@link #couldTake}), and when it came.
+     */
+    record Heard(CapabilitySummary summary, String holds, long atMillis) {
+        boolean free() {
+            return holds.isEmpty();
+        }
+    }
+
+    /**
+     * Whether the vehicle heard as {@code h} would take a seat of {@code role}: a free vehicle any, one
+     * holding a role only a role ranked before it (it moves up, Assignee.promotion, and refuses the rest).
+     */
+    static boolean couldTake(Heard h, String role, Slots slots) {
+        return h.free() || slots.mission().role(h.holds()).isPresent() && slots.rank(role) < slots.rank(h.holds());
     }
 
     /**

@@ -27,9 +27,11 @@ final class TeamBodies {
             (m, w) -> {
                 w.i64(m.inReplyTo());
                 w.string8(m.mission());
+                w.string8(m.holds());
                 CapabilityBodies.writeSummary(m.summary(), w);
             },
-            r -> new DiscoveryReply(r.i64("inReplyTo"), r.name("mission"), CapabilityBodies.readSummary(r)));
+            r -> new DiscoveryReply(r.i64("inReplyTo"), r.name("mission"), r.string8("holds", WireFormat.MAX_NAME),
+                    CapabilityBodies.readSummary(r)));
 
     static final BodyCodec<CapabilityRequest> CAPABILITY_REQUEST = new BodyCodec<>(MessageType.CAPABILITY_REQUEST,
             CapabilityRequest.class,

@@ -254,7 +254,7 @@ class DecoderRejectionTest {
                 "uav2", new java.util.TreeSet<>(java.util.List.of(first, second)), new java.util.TreeSet<>()));
         overwrite(form, first, a);
         overwrite(form, second, b);
-        return Raw.of(MessageType.DISCOVERY_REPLY).i64(1).str8("m").raw(form).datagram();
+        return Raw.of(MessageType.DISCOVERY_REPLY).i64(1).str8("m").str8("").raw(form).datagram();   // free: holds nothing
     }
 
     /** Overwrites the last occurrence of {@code was} in {@code bytes} with {@code now} (same length, ASCII). */

@@ -180,6 +180,14 @@ class MessageValidationTest {
     }
 
     @Test
+    void discoveryReply_refusesAHeldRoleOver64Bytes() {
+        String refusal = refusal(() -> new DiscoveryReply(1, "m", "r".repeat(65), new CapabilitySummary("uav1",
+                new java.util.TreeSet<>(), new java.util.TreeSet<>())));
+        assertEquals(true, refusal.startsWith("DiscoveryReply.holds 'rrrr") && refusal.endsWith(
+                "' is 65 UTF-8 bytes; the role held (empty when free) must be 0 to 64 bytes"), refusal);
+    }
+
+    @Test
     void discoveryReply_refusesASummaryWithTooManyResources() {
         java.util.TreeSet<String> resources = new java.util.TreeSet<>();
         for (int i = 0; i < 65; i++) {

@@ -136,6 +136,7 @@ final class Samples {
         return List.of(
                 new Discovery("rescue", "commander", 0, 1),
                 new DiscoveryReply(11, "rescue", summary()),
+                new DiscoveryReply(11, "rescue", "hdetector", summary()),
                 new CapabilityRequest("relay"),
                 new CapabilityReply(12, description(2, 2)),
                 new RoleAssignment("rescue", "relay", IDENTITY, "uav1",

@@ -148,6 +148,25 @@ class TeamFaultSweepTest {
         }
     }
 
+    /**
+     * Seed 52,001,848 (soak): a vehicle holding a relay seat under one surveyor answered the other
+     * surveyor's discovery, as a candidate for the detector seats that surveyor manages (ranked before
+     * its own); but the surveyor had only its relay seat open, offered it, and was refused ("already
+     * has parent"), forgot the answer, discovered again and heard the same answer: every 100 ms for
+     * good, and between tries it gave up the seat it hosted for that vehicle. A discovery reply now
+     * says which role its sender holds, and a manager offers such a vehicle only seats ranked before it.
+     */
+    @org.junit.jupiter.api.Test
+    void aVehicleWithAParent_isOfferedOnlyASeatItWouldMoveUpTo() {
+        List<String> faults = new ArrayList<>();
+        try {
+            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 52_001_848L, FAULT_MILLIS)
+                    .log(faults::add).run();
+        } catch (InvariantViolation v) {
+            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+        }
+    }
+
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
