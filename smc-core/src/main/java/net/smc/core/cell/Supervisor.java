@@ -392,10 +392,11 @@ final class Supervisor {
      * free, or holding a role ranked after it elsewhere ({@link TeamState#couldTake}).
      */
     private Optional<String> freeFor(MissionRole wanted, long now) {
+        Predicate<Heard> takes = couldTake(wanted);
         return st.heard.entrySet().stream()
                 .filter(e -> now - e.getValue().atMillis() <= ctx.timing().failureTimeoutMillis())
                 .filter(e -> !st.children.containsKey(e.getKey()) && !st.capabilityRequests.containsKey(e.getKey()))
-                .filter(e -> couldTake(wanted).test(e.getValue()))
+                .filter(e -> takes.test(e.getValue()))
                 .map(Map.Entry::getKey).sorted().findFirst();
     }
 

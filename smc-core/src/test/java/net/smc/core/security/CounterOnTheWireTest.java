@@ -82,24 +82,21 @@ class CounterOnTheWireTest {
     @Test
     void macdDatagramReplayedAWrapLater_isRefusedAsBadMac_thoughItsLowBitsNameAFreshCounter() {
         Team.shakeHands(a, b);
-        byte[] datagram = a.wrapFor("uav-b", payload);
-        assertInstanceOf(Unwrapped.Delivered.class, b.unwrap(datagram));
-        team.clock.advance(WRAP_MILLIS);
-
-        Unwrapped.Rejected r = assertInstanceOf(Unwrapped.Rejected.class, b.unwrap(datagram));
-
+        Unwrapped.Rejected r = replayedAWrapLater(a.wrapFor("uav-b", payload));
         assertEquals(Rejection.BAD_MAC, r.reason(), r.detail());
     }
 
     @Test
     void signedDatagramReplayedAWrapLater_isRefusedAsBadSignature() {
-        byte[] datagram = a.wrapSigned(payload);
+        Unwrapped.Rejected r = replayedAWrapLater(a.wrapSigned(payload));
+        assertEquals(Rejection.BAD_SIGNATURE, r.reason(), r.detail());
+    }
+
+    /** Delivers {@code datagram} to b, replays it 2^48 counter steps later, and returns b's refusal. */
+    private Unwrapped.Rejected replayedAWrapLater(byte[] datagram) {
         assertInstanceOf(Unwrapped.Delivered.class, b.unwrap(datagram));
         team.clock.advance(WRAP_MILLIS);
-
-        Unwrapped.Rejected r = assertInstanceOf(Unwrapped.Rejected.class, b.unwrap(datagram));
-
-        assertEquals(Rejection.BAD_SIGNATURE, r.reason(), r.detail());
+        return assertInstanceOf(Unwrapped.Rejected.class, b.unwrap(datagram));
     }
 
     @Test

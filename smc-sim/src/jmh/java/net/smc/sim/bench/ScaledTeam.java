@@ -182,8 +182,6 @@ final class ScaledTeam {
          * headers leave the sender to the transport).
          */
         private final Map<Address, int[]> envelopes = new HashMap<>();
-        /** Each vehicle's address, gathered at the first datagram. */
-        private final Map<Address, String> vehicleAt = new HashMap<>();
 
         @Override
         public void sent(long atMillis, Address from, Address to, byte[] data) {
@@ -203,13 +201,7 @@ final class ScaledTeam {
                     && data[IdealAuthentication.PAYLOAD_OFFSET] == 'S' && data[IdealAuthentication.PAYLOAD_OFFSET + 1] == 'M';
             int payload = sealed ? data.length - IdealAuthentication.SEAL_BYTES : data.length;
             int[] envelope = envelopes.computeIfAbsent(from, a -> {
-                if (vehicleAt.isEmpty()) {
-                    sim.vehicles().forEach(v -> vehicleAt.put(sim.address(v.id()), v.id()));
-                }
-                String sender = vehicleAt.get(a);
-                if (sender == null) {
-                    throw new IllegalStateException("no vehicle at " + a);
-                }
+                String sender = sim.vehicleAt(a).orElseThrow(() -> new IllegalStateException("no vehicle at " + a));
                 return new int[] {WireSizes.pairMac(sender, 0), WireSizes.signed(sender, missionName, 0)};
             });
             return payload + envelope[to == null ? 1 : 0];

@@ -85,6 +85,8 @@ public final class TeamSimulation implements CellTeam {
     private final IdealAuthentication ideal;
     private final TrustAnchor trust;
     private final Map<String, Node> nodes = new LinkedHashMap<>();
+    /** Each vehicle by the address it is attached at. */
+    private final Map<Address, String> byAddress = new java.util.HashMap<>();
     /** The last {@link #TRACE_LINES} events, made into lines only when the trace is read. */
     private final Deque<CellEvent> trace = new ArrayDeque<>();
     private final Consumer<CellEvent> listener;
@@ -197,6 +199,7 @@ public final class TeamSimulation implements CellTeam {
         }
         Node n = new Node(v, Address.loopback(nextPort++));
         nodes.put(v.id(), n);
+        byAddress.put(n.address, v.id());
         rogues = null;
         if (world != null) {
             world.bind(v.id(), n.address);
@@ -430,6 +433,14 @@ public final class TeamSimulation implements CellTeam {
     @Override
     public Address address(String vehicle) {
         return node(vehicle).address;
+    }
+
+    /**
+     * The vehicle attached at {@code address}, if any: who sent a datagram the network carries (most
+     * message headers leave their sender to the transport).
+     */
+    public java.util.Optional<String> vehicleAt(Address address) {
+        return java.util.Optional.ofNullable(byAddress.get(address));
     }
 
     public InMemoryNetwork network() {

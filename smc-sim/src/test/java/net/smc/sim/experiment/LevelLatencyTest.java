@@ -49,18 +49,18 @@ class LevelLatencyTest {
         final Map<String, Long> firstDiscovery = new HashMap<>();
         /** When copies of each vehicle's discovery broadcasts arrived. */
         final Map<String, List<Long>> discoveries = new HashMap<>();
-        /** Each vehicle's address: the transport names the sender, which most headers leave out. */
-        private final Map<Address, String> vehicleAt = new HashMap<>();
+        /** Who is attached where: the transport names the sender, which most headers leave out. */
+        private final TeamSimulation sim;
 
         Counts(TeamSimulation sim) {
-            sim.vehicles().forEach(v -> vehicleAt.put(sim.address(v.id()), v.id()));
+            this.sim = sim;
         }
 
         @Override
         public void delivered(long atMillis, Address from, Address to, byte[] data) {
             int type = parse.type(data);
             if (type >= 0) {
-                String sender = vehicleAt.getOrDefault(from, "?");
+                String sender = sim.vehicleAt(from).orElse("?");
                 bySender.computeIfAbsent(sender, v -> new HashMap<>()).merge(MessageType.fromCode(type), 1, Integer::sum);
                 if (type == MessageType.DISCOVERY.code()) {
                     firstDiscovery.putIfAbsent(sender, atMillis);

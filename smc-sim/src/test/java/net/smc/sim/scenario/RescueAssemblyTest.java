@@ -62,8 +62,7 @@ class RescueAssemblyTest {
                 long sent = ByteBuffer.wrap(data).getLong(0) >> 20;
                 byte[] envelope = Arrays.copyOfRange(data, 8, data.length - 8);
                 // the transport names the sender (the header leaves it out but for discoveries and their replies)
-                String sender = team.vehicles().stream().map(v -> v.id()).filter(v -> team.address(v).equals(from))
-                        .findFirst().orElse(null);
+                String sender = team.vehicleAt(from).orElse(null);
                 if (decoder.decode(sender, envelope, 0, envelope.length) instanceof DecodeResult.Decoded d && ASSEMBLY.contains(d.envelope().type())) {
                     assembly.add("sent " + sent + " ms: " + d.envelope().type() + " from " + d.envelope().sender());
                     first[0] = Math.min(first[0], sent);

@@ -29,15 +29,11 @@ class DiscoveryFilterTest {
             @Override
             public void delivered(long atMillis, Address from, Address to, byte[] data) {
                 if (decoder.decode(data) instanceof DecodeResult.Decoded d && d.envelope().type() == MessageType.DISCOVERY_REPLY) {
-                    replies.add(d.envelope().sender() + ">" + vehicleAt(sim, to));
+                    replies.add(d.envelope().sender() + ">" + sim.vehicleAt(to).orElse("?"));
                 }
             }
         });
         return replies;
-    }
-
-    private static String vehicleAt(TeamSimulation sim, Address a) {
-        return sim.vehicles().stream().map(SimVehicle::id).filter(v -> sim.address(v).equals(a)).findFirst().orElse("?");
     }
 
     private static TeamSimulation sim(List<SimVehicle> team) {

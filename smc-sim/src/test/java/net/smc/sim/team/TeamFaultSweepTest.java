@@ -47,13 +47,7 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void aChildLeftWithNoSeatsIsDropped_andCanBeRecruitedAgain() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 3_007_300L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(3_007_300L);
     }
 
     /**
@@ -64,13 +58,7 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void aBackupThatTookOverRefusesTheRoleItWasTaking() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 500_367L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(500_367L);
     }
 
     /**
@@ -83,13 +71,7 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void aLateCopyOfAnEarlierAssignmentIsNotTaken() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 1_007_892L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(1_007_892L);
     }
 
     /**
@@ -102,13 +84,7 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void anAdoptedVehicleKeepsOnlyTheSeatItsHeartbeatNames() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 1_047_146L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(1_047_146L);
     }
 
     /**
@@ -120,13 +96,7 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void anAdoptedChildThatIsNotVouchedForReportsUntilItIs() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 8_000_837L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(8_000_837L);
     }
 
     /**
@@ -139,13 +109,7 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void aSurveyorGivenAnotherSurveyorSeat_givesUpTheSeatItHostedForTheFirst() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 51_001_160L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(51_001_160L);
     }
 
     /**
@@ -158,25 +122,24 @@ class TeamFaultSweepTest {
      */
     @org.junit.jupiter.api.Test
     void aVehicleWithAParent_isOfferedOnlyASeatItWouldMoveUpTo() {
-        List<String> faults = new ArrayList<>();
-        try {
-            new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, 52_001_848L, FAULT_MILLIS)
-                    .log(faults::add).run();
-        } catch (InvariantViolation v) {
-            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-        }
+        replay(52_001_848L);
     }
 
     @TestFactory
     Stream<DynamicTest> seeds() {
         return LongStream.range(FIRST, FIRST + SEEDS).mapToObj(seed -> DynamicTest.dynamicTest("seed " + seed, () -> {
-            List<String> faults = new ArrayList<>();
-            try {
-                OUTCOMES.add(new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY,
-                        seed, FAULT_MILLIS).log(faults::add).run());
-            } catch (InvariantViolation v) {
-                throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
-            }
+            OUTCOMES.add(replay(seed));
         }));
+    }
+
+    /** Runs seed {@code seed}'s fault schedule; a broken invariant fails with the faults and the report. */
+    private static FaultSchedule.Outcome replay(long seed) {
+        List<String> faults = new ArrayList<>();
+        try {
+            return new FaultSchedule(Missions.reconnaissance(), Missions.centralised(), Missions.REPOSITORY, seed, FAULT_MILLIS)
+                    .log(faults::add).run();
+        } catch (InvariantViolation v) {
+            throw new AssertionError("faults: " + faults + "\n" + v.report(), v);
+        }
     }
 }
