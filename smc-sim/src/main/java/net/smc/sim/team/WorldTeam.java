@@ -18,6 +18,7 @@ import net.smc.policy.RunResult;
 import net.smc.sim.hardware.RobotHardware;
 import net.smc.sim.map.OccupancyGrid;
 import net.smc.sim.robot.SimRobot;
+import net.smc.sim.task.ClearWay;
 import net.smc.sim.task.TaskCatalog;
 import net.smc.sim.task.TaskContext;
 import net.smc.sim.arena.Arena;
@@ -46,6 +47,8 @@ public final class WorldTeam {
     private final Map<String, StationHardware> stations = new LinkedHashMap<>();
     private final Map<String, Map<String, Task>> tasks = new LinkedHashMap<>();
     private final Map<String, RadioSignal> signals = new LinkedHashMap<>();
+    /** Each robot's {@link ClearWay}, with its latest boot's tasks. */
+    private final Map<String, ClearWay> clearWays = new LinkedHashMap<>();
 
     WorldTeam(CellTeam team, SimWorld world, TaskCatalog catalog, Map<String, String> places,
               Map<String, List<String>> standalone) {
@@ -123,6 +126,14 @@ public final class WorldTeam {
             own.put(name, catalog.create(name, context));
         }
         tasks.put(vehicle, own);
+        // A robot that no task drives leaves a narrow passage; one behaviour a robot, with this boot's tasks.
+        ClearWay before = clearWays.remove(vehicle);
+        if (before != null) {
+            context.hardware().control(before, null);
+        }
+        if (context.hardware().has(RobotHardware.Device.DRIVE)) {
+            clearWays.put(vehicle, ClearWay.install(context, List.copyOf(own.values())));
+        }
         return TaskProvider.of(own);
     }
 
