@@ -17,12 +17,16 @@ import net.smc.sim.map.Point;
  * What a robot does while none of its tasks drives it: it does not stay in a narrow passage. A
  * robot whose role changes to one that drives nothing (a surveyor that takes over as commander)
  * stops where its last driving task left it, and that may be a doorway; standing there it closes
- * the room behind to every teammate (their paths keep clear of it, and a detector sent into the
- * room gives its suspect up at the door). So, once no driving task has run for {@link #IDLE_SECONDS},
- * a robot whose map shows it between two obstacles across a way open on both ends drives, on the
- * map it has, to the nearest known free place that is no passage, has room round it and lies at
- * least {@link #MIN_MOVE} from where it stood; then it stops there. A driving task that starts takes
- * the wheels back at once. Not a catalogue task: no role asks for it, every robot has it.
+ * the room behind to its teammates (their paths keep clear of it, and a detector sent into the
+ * room gives its suspect up at the door). So, once no driving task has run for
+ * {@link #IDLE_SECONDS}, a robot that a task has driven before and whose map shows it between two
+ * obstacles across a way open on both ends ({@link #inPassage}) drives, on the map it has, to the
+ * nearest known free place that is no passage, has room round it and lies at least
+ * {@link #MIN_MOVE} from where it stood; then it stops there. A driving task that starts takes the
+ * wheels back at once. A robot that no task has driven yet stays where it was placed: the robots
+ * parked round an aggregator at the house's entrance made a passage on its map, and moved, it
+ * changed the mission's course for nothing. Not a catalogue task: no role asks for it, every robot
+ * has it.
  *
  * <pre>{@code
  * ClearWay.install(context, tasks.values());   // with the robot's tasks, made from the same context
@@ -39,8 +43,8 @@ public final class ClearWay {
     static final double OPEN_ENDS = 0.5;
     /** The room a place to stand needs: no occupied cell's centre nearer, m. */
     static final double ROOM = 0.45;
-    /** The least distance, along the free cells, between where the robot stood and where it goes, m. */
-    static final double MIN_MOVE = 0.9;
+    /** The least distance between where the robot stood and where it goes, m. */
+    static final double MIN_MOVE = 1.0;
     /** The farthest, along the free cells, the robot looks for a place to go, m. */
     static final double SEARCH = 3;
     /** How long a move may take before the robot gives it up and stops, s. */
@@ -53,6 +57,8 @@ public final class ClearWay {
     private final PathFollower follower;
     /** Since when no driving task ran (NaN: one runs). */
     private double idleSince = Double.NaN;
+    /** Whether a driving task has run on this robot since this behaviour was given it. */
+    private boolean everDriven;
     private double nextCheck = Double.NEGATIVE_INFINITY;
     /** When the current move began (NaN: none). */
     private double movingSince = Double.NaN;
@@ -70,8 +76,17 @@ public final class ClearWay {
      * {@code context}: while one of them that drives runs, this one does nothing).
      */
     public static ClearWay install(TaskContext context, Collection<? extends Task> tasks) {
+        return install(context, tasks, null);
+    }
+
+    /**
+     * As {@link #install(TaskContext, Collection)} on a robot whose cell booted again, {@code before}
+     * its behaviour until then (removed by the caller): whether a task drove the robot carries over.
+     */
+    public static ClearWay install(TaskContext context, Collection<? extends Task> tasks, ClearWay before) {
         Objects.requireNonNull(context, "context");
         ClearWay way = new ClearWay(context.hardware(), context.map(), Objects.requireNonNull(tasks, "tasks"));
+        way.everDriven = before != null && before.everDriven;
         context.hardware().control(way, way::step);
         return way;
     }
@@ -92,6 +107,7 @@ public final class ClearWay {
 
     void step(double time, double dt) {
         if (driven()) {
+            everDriven = true;
             idleSince = Double.NaN;
             if (follower.active()) {
                 follower.clear(); // the task has the wheels now
@@ -99,7 +115,7 @@ public final class ClearWay {
             }
             return;
         }
-        if (!hardware.drive().working()) {
+        if (!everDriven || !hardware.drive().working()) {
             follower.clear();
             return;
         }
@@ -143,8 +159,10 @@ public final class ClearWay {
 
     /**
      * Whether the free cell ({@code c}, {@code r}) lies in a passage on {@code grid}: occupied cells
-     * within {@link #PASSAGE_HALF_WIDTH} on both sides along one axis, and the way along the other
-     * axis free for {@link #OPEN_ENDS} on both ends (so a robot beside one wall, or in a corner, is in none).
+     * within {@link #PASSAGE_HALF_WIDTH} on both sides along one axis (in the robot's row or column
+     * or the one beside it on either hand: a thin wall lies on the edge of two rows, and a map wears
+     * one of them away), and the way along the other axis free for {@link #OPEN_ENDS} on both ends
+     * (so a robot beside one wall, or in a corner, is in none).
      */
     static boolean inPassage(OccupancyGrid grid, int c, int r) {
         int near = (int) Math.floor(PASSAGE_HALF_WIDTH / grid.resolution() + 0.5);
@@ -155,11 +173,18 @@ public final class ClearWay {
                         && clear(grid, c, r, 1, 0, open) && clear(grid, c, r, -1, 0, open));
     }
 
-    /** Whether an occupied cell lies within {@code cells} of ({@code c}, {@code r}) in direction ({@code dc}, {@code dr}). */
+    /**
+     * Whether an occupied cell lies within {@code cells} of ({@code c}, {@code r}) in direction
+     * ({@code dc}, {@code dr}), on that line or on one of the two beside it.
+     */
     private static boolean blocked(OccupancyGrid grid, int c, int r, int dc, int dr, int cells) {
-        for (int i = 1; i <= cells; i++) {
-            if (grid.inside(c + i * dc, r + i * dr) && grid.isOccupied(c + i * dc, r + i * dr)) {
-                return true;
+        for (int side = -1; side <= 1; side++) {
+            int sc = c + side * dr;   // beside the line: across the direction
+            int sr = r + side * dc;
+            for (int i = 1; i <= cells; i++) {
+                if (grid.inside(sc + i * dc, sr + i * dr) && grid.isOccupied(sc + i * dc, sr + i * dr)) {
+                    return true;
+                }
             }
         }
         return false;
@@ -187,13 +212,13 @@ public final class ClearWay {
         ArrayDeque<int[]> queue = new ArrayDeque<>();
         steps[c + r * cols] = 0;
         queue.add(new int[] {c, r});
-        int min = (int) Math.ceil(MIN_MOVE / grid.resolution());
         int max = (int) Math.floor(SEARCH / grid.resolution());
         int[][] around = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         while (!queue.isEmpty()) {
             int[] at = queue.poll();
             int d = steps[at[0] + at[1] * cols];
-            if (d >= min && roomy(grid, at[0], at[1]) && !inPassage(grid, at[0], at[1])) {
+            if (Math.hypot(at[0] - c, at[1] - r) * grid.resolution() >= MIN_MOVE && roomy(grid, at[0], at[1])
+                    && !inPassage(grid, at[0], at[1])) {
                 return Optional.of(grid.centre(at[0], at[1]));
             }
             if (d >= max) {

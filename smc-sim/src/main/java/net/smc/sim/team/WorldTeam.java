@@ -132,7 +132,7 @@ public final class WorldTeam {
             context.hardware().control(before, null);
         }
         if (context.hardware().has(RobotHardware.Device.DRIVE)) {
-            clearWays.put(vehicle, ClearWay.install(context, List.copyOf(own.values())));
+            clearWays.put(vehicle, ClearWay.install(context, List.copyOf(own.values()), before));
         }
         return TaskProvider.of(own);
     }

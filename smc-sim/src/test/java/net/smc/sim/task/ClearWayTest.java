@@ -20,9 +20,9 @@ class ClearWayTest {
         return new FakeWorld(8, 4).box(4, 0, 4.25, 1.5).box(4, 2.5, 4.25, 4);
     }
 
-    /** The robot's map of {@link #doorway()}: every cell known, the wall's occupied. */
+    /** The robot's map of {@code world}: every cell known, those of its obstacles occupied. */
     private static OccupancyGrid map(FakeWorld world) {
-        OccupancyGrid map = new OccupancyGrid(0, 0, 8, 4, 0.25);
+        OccupancyGrid map = new OccupancyGrid(0, 0, world.width, world.height, 0.25);
         for (int r = 0; r < map.rows(); r++) {
             for (int c = 0; c < map.cols(); c++) {
                 var p = map.centre(c, r);
@@ -44,12 +44,16 @@ class ClearWayTest {
     }
 
     @Test
-    void aRobotNoTaskDrives_leavesTheDoorwayItStandsIn_andStopsClearOfIt() {
+    void aRobotNoTaskDrivesAnyMore_leavesTheDoorwayItStandsIn_andStopsClearOfIt() {
         FakeWorld world = doorway();
         FakeRobot robot = world.robot("s1", 4.125, 2.0, 0);
         OccupancyGrid map = map(world);
-        ClearWay way = ClearWay.install(new TaskContext(robot, map), List.of(new Explorer(robot, map)));
+        Navigator navigator = new Navigator(robot, map);
+        ClearWay way = ClearWay.install(new TaskContext(robot, map), List.of(navigator));
         assertTrue(ClearWay.inPassage(map, map.col(robot.x), map.row(robot.y)), "the doorway is a passage on the map");
+        navigator.start();
+        world.run(0.5);
+        navigator.stop();
 
         world.run(ClearWay.IDLE_SECONDS - 0.5);
         assertEquals(4.125, robot.x, 1e-9, "it waits before it moves");
@@ -58,7 +62,25 @@ class ClearWayTest {
         assertFalse(inTheDoorway(robot), "still in the doorway at x " + robot.x);
         assertFalse(way.moving(), "it stopped");
         assertEquals(0, robot.speed(), 1e-6, "it stands still");
+        assertTrue(Math.hypot(robot.x - 4.125, robot.y - 2.0) >= ClearWay.MIN_MOVE - 0.2, "it went about a metre: " + robot.x + ", " + robot.y);
         assertFalse(ClearWay.inPassage(map, map.col(robot.x), map.row(robot.y)), "it stands in no passage: " + robot.x + ", " + robot.y);
+    }
+
+    /**
+     * A robot that no task has driven stays where it was placed, in a passage too: at the house's
+     * entrance the robots parked round the aggregator made one on its map.
+     */
+    @Test
+    void aRobotNoTaskHasDriven_staysWhereItWasPlaced_evenInADoorway() {
+        FakeWorld world = doorway();
+        FakeRobot robot = world.robot("a1", 4.125, 2.0, 0);
+        OccupancyGrid map = map(world);
+        ClearWay.install(new TaskContext(robot, map), List.of(new Navigator(robot, map)));
+
+        world.run(30);
+
+        assertEquals(4.125, robot.x, 1e-9);
+        assertEquals(2.0, robot.y, 1e-9);
     }
 
     @Test
@@ -67,8 +89,15 @@ class ClearWayTest {
         FakeRobot open = world.robot("s1", 2.0, 2.0, 0);
         FakeRobot wall = world.robot("s2", 3.7, 0.6, 0);
         OccupancyGrid map = map(world);
-        ClearWay.install(new TaskContext(open, map), List.of());
-        ClearWay.install(new TaskContext(wall, map), List.of());
+        Navigator first = new Navigator(open, map);
+        Navigator second = new Navigator(wall, map);
+        ClearWay.install(new TaskContext(open, map), List.of(first));
+        ClearWay.install(new TaskContext(wall, map), List.of(second));
+        first.start();
+        second.start();
+        world.run(0.5);
+        first.stop();
+        second.stop();
 
         world.run(20);
 
@@ -95,6 +124,50 @@ class ClearWayTest {
 
         navigator.stop();    // its role ended: now no task drives
         world.run(30);
+        assertFalse(inTheDoorway(robot), "still in the doorway at x " + robot.x);
+    }
+
+    /**
+     * A doorway whose jambs a map shows in the row beside the robot's only (a thin wall lies on the
+     * edge of two rows of cells, and the map has worn one of them away) is still a passage.
+     */
+    @Test
+    void aDoorwayWhoseJambsAreInTheNextRow_isAPassage() {
+        OccupancyGrid map = new OccupancyGrid(0, 0, 8, 4, 0.25);
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c < map.cols(); c++) {
+                var p = map.centre(c, r);
+                boolean jamb = r == 7 && (c == 14 || c == 19);   // row 7 (y 1.75 to 2): one jamb each side, 1 m apart
+                for (int i = 0; i < 3; i++) {
+                    if (jamb) {
+                        map.markOccupied(p.x(), p.y());
+                    } else {
+                        map.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        assertTrue(ClearWay.inPassage(map, 16, 8), "between the jambs, in the row above theirs");
+        assertFalse(ClearWay.inPassage(map, 16, 10), "two rows above them");
+        assertFalse(ClearWay.inPassage(map, 10, 7), "in their row, far from both");
+    }
+
+    /** Driven before, a robot whose cell boots again keeps that: its new behaviour clears the way too. */
+    @Test
+    void aRobotWhoseCellBootsAgain_keepsHavingBeenDriven() {
+        FakeWorld world = doorway();
+        FakeRobot robot = world.robot("s1", 4.125, 2.0, 0);
+        OccupancyGrid map = map(world);
+        Navigator before = new Navigator(robot, map);
+        ClearWay first = ClearWay.install(new TaskContext(robot, map), List.of(before));
+        before.start();
+        world.run(0.5);
+        before.stop();
+        robot.control(first, null);   // the cell boots again: its behaviour is made anew
+
+        ClearWay.install(new TaskContext(robot, map), List.of(new Navigator(robot, map)), first);
+        world.run(30);
+
         assertFalse(inTheDoorway(robot), "still in the doorway at x " + robot.x);
     }
 }
