@@ -57,7 +57,7 @@ public final class ClearWay {
     private final PathFollower follower;
     /** Since when no driving task ran (NaN: one runs). */
     private double idleSince = Double.NaN;
-    /** Whether a driving task has run on this robot since this behaviour was given it. */
+    /** Whether a driving task has run on this robot (since its first boot: carried over when its cell boots again). */
     private boolean everDriven;
     private double nextCheck = Double.NEGATIVE_INFINITY;
     /** When the current move began (NaN: none). */
