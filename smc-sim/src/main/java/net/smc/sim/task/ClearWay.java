@@ -24,7 +24,7 @@ import net.smc.sim.map.Point;
  * nearest known free place that is no passage, has room round it and lies at least
  * {@link #MIN_MOVE} from where it stood; then it stops there. A driving task that starts takes the
  * wheels back at once. A robot that no task has driven yet stays where it was placed: the robots
- * parked round an aggregator at the house's entrance made a passage on its map, and moved, it
+ * parked round an aggregator at the house's entrance made a passage on its map, and moving it
  * changed the mission's course for nothing. Not a catalogue task: no role asks for it, every robot
  * has it.
  *
