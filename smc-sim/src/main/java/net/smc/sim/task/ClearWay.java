@@ -41,7 +41,7 @@ public final class ClearWay {
     static final double PASSAGE_HALF_WIDTH = 0.75;
     /** How far the way must be open on both ends for two obstacles beside the robot to be a passage, m. */
     static final double OPEN_ENDS = 0.5;
-    /** The room a place to stand needs: no occupied cell's centre nearer, m. */
+    /** The room a place to stand needs: no occupied cell's centre within it, m. */
     static final double ROOM = 0.45;
     /** The least distance between where the robot stood and where it goes, m. */
     static final double MIN_MOVE = 1.0;
@@ -213,11 +213,13 @@ public final class ClearWay {
         steps[c + r * cols] = 0;
         queue.add(new int[] {c, r});
         int max = (int) Math.floor(SEARCH / grid.resolution());
+        // a cell without ROOM round it is one a planner keeping that much clearance closes
+        boolean[] cramped = new PathPlanner(ROOM).closedCells(grid, List.of(), 0);
         int[][] around = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         while (!queue.isEmpty()) {
             int[] at = queue.poll();
             int d = steps[at[0] + at[1] * cols];
-            if (Math.hypot(at[0] - c, at[1] - r) * grid.resolution() >= MIN_MOVE && roomy(grid, at[0], at[1])
+            if (Math.hypot(at[0] - c, at[1] - r) * grid.resolution() >= MIN_MOVE && !cramped[at[0] + at[1] * cols]
                     && !inPassage(grid, at[0], at[1])) {
                 return Optional.of(grid.centre(at[0], at[1]));
             }
@@ -234,22 +236,5 @@ public final class ClearWay {
             }
         }
         return Optional.empty();
-    }
-
-    /** Whether no occupied cell's centre lies within {@link #ROOM} of the centre of ({@code c}, {@code r}). */
-    private static boolean roomy(OccupancyGrid grid, int c, int r) {
-        int reach = (int) Math.ceil(ROOM / grid.resolution());
-        double limit = ROOM * ROOM;
-        double res = grid.resolution();
-        for (int dr = -reach; dr <= reach; dr++) {
-            for (int dc = -reach; dc <= reach; dc++) {
-                double dx = dc * res;
-                double dy = dr * res;
-                if (dx * dx + dy * dy < limit && grid.inside(c + dc, r + dr) && grid.isOccupied(c + dc, r + dr)) {
-                    return false;
-                }
-            }
-        }
-        return true;
     }
 }

@@ -20,22 +20,15 @@ class ClearWayTest {
         return new FakeWorld(8, 4).box(4, 0, 4.25, 1.5).box(4, 2.5, 4.25, 4);
     }
 
-    /** The robot's map of {@code world}: every cell known, those of its obstacles occupied. */
-    private static OccupancyGrid map(FakeWorld world) {
-        OccupancyGrid map = new OccupancyGrid(0, 0, world.width, world.height, 0.25);
-        for (int r = 0; r < map.rows(); r++) {
-            for (int c = 0; c < map.cols(); c++) {
-                var p = map.centre(c, r);
-                for (int i = 0; i < 3; i++) {
-                    if (world.solid(p.x(), p.y())) {
-                        map.markOccupied(p.x(), p.y());
-                    } else {
-                        map.markFree(p.x(), p.y());
-                    }
-                }
-            }
+    /** {@code navigators} run a moment and stop: the roles that drove their robots ended. */
+    private static void driveAMomentAndStop(FakeWorld world, Navigator... navigators) {
+        for (Navigator n : navigators) {
+            n.start();
         }
-        return map;
+        world.run(0.5);
+        for (Navigator n : navigators) {
+            n.stop();
+        }
     }
 
     /** Whether the robot's body (0.32 m across) overlaps the doorway's opening, x 3.84 to 4.41. */
@@ -47,13 +40,11 @@ class ClearWayTest {
     void aRobotNoTaskDrivesAnyMore_leavesTheDoorwayItStandsIn_andStopsClearOfIt() {
         FakeWorld world = doorway();
         FakeRobot robot = world.robot("s1", 4.125, 2.0, 0);
-        OccupancyGrid map = map(world);
+        OccupancyGrid map = world.mapped(0.25);
         Navigator navigator = new Navigator(robot, map);
         ClearWay way = ClearWay.install(new TaskContext(robot, map), List.of(navigator));
         assertTrue(ClearWay.inPassage(map, map.col(robot.x), map.row(robot.y)), "the doorway is a passage on the map");
-        navigator.start();
-        world.run(0.5);
-        navigator.stop();
+        driveAMomentAndStop(world, navigator);
 
         world.run(ClearWay.IDLE_SECONDS - 0.5);
         assertEquals(4.125, robot.x, 1e-9, "it waits before it moves");
@@ -74,7 +65,7 @@ class ClearWayTest {
     void aRobotNoTaskHasDriven_staysWhereItWasPlaced_evenInADoorway() {
         FakeWorld world = doorway();
         FakeRobot robot = world.robot("a1", 4.125, 2.0, 0);
-        OccupancyGrid map = map(world);
+        OccupancyGrid map = world.mapped(0.25);
         ClearWay.install(new TaskContext(robot, map), List.of(new Navigator(robot, map)));
 
         world.run(30);
@@ -88,16 +79,12 @@ class ClearWayTest {
         FakeWorld world = doorway();
         FakeRobot open = world.robot("s1", 2.0, 2.0, 0);
         FakeRobot wall = world.robot("s2", 3.7, 0.6, 0);
-        OccupancyGrid map = map(world);
+        OccupancyGrid map = world.mapped(0.25);
         Navigator first = new Navigator(open, map);
         Navigator second = new Navigator(wall, map);
         ClearWay.install(new TaskContext(open, map), List.of(first));
         ClearWay.install(new TaskContext(wall, map), List.of(second));
-        first.start();
-        second.start();
-        world.run(0.5);
-        first.stop();
-        second.stop();
+        driveAMomentAndStop(world, first, second);
 
         world.run(20);
 
@@ -111,7 +98,7 @@ class ClearWayTest {
     void whileATaskThatDrivesRuns_theWheelsAreTheTasks() {
         FakeWorld world = doorway();
         FakeRobot robot = world.robot("s1", 4.125, 2.0, 0);
-        OccupancyGrid map = map(world);
+        OccupancyGrid map = world.mapped(0.25);
         Navigator navigator = new Navigator(robot, map);
         ClearWay way = ClearWay.install(new TaskContext(robot, map), List.of(navigator));
         navigator.start();   // running, no goal: it holds the robot where it is
@@ -157,12 +144,10 @@ class ClearWayTest {
     void aRobotWhoseCellBootsAgain_keepsHavingBeenDriven() {
         FakeWorld world = doorway();
         FakeRobot robot = world.robot("s1", 4.125, 2.0, 0);
-        OccupancyGrid map = map(world);
+        OccupancyGrid map = world.mapped(0.25);
         Navigator before = new Navigator(robot, map);
         ClearWay first = ClearWay.install(new TaskContext(robot, map), List.of(before));
-        before.start();
-        world.run(0.5);
-        before.stop();
+        driveAMomentAndStop(world, before);
         robot.control(first, null);   // the cell boots again: its behaviour is made anew
 
         ClearWay.install(new TaskContext(robot, map), List.of(new Navigator(robot, map)), first);

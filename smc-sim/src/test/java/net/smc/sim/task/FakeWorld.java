@@ -60,6 +60,27 @@ final class FakeWorld {
         return r;
     }
 
+    /**
+     * A map of this world as a robot that has seen all of it holds it: every cell of
+     * {@code resolution} known, those whose centre lies in an obstacle occupied.
+     */
+    net.smc.sim.map.OccupancyGrid mapped(double resolution) {
+        net.smc.sim.map.OccupancyGrid map = new net.smc.sim.map.OccupancyGrid(0, 0, width, height, resolution);
+        for (int r = 0; r < map.rows(); r++) {
+            for (int c = 0; c < map.cols(); c++) {
+                var p = map.centre(c, r);
+                for (int i = 0; i < 3; i++) {
+                    if (solid(p.x(), p.y())) {
+                        map.markOccupied(p.x(), p.y());
+                    } else {
+                        map.markFree(p.x(), p.y());
+                    }
+                }
+            }
+        }
+        return map;
+    }
+
     /** Whether a point is inside an obstacle or outside the arena. */
     boolean solid(double x, double y) {
         return blocked(x, y, 0);

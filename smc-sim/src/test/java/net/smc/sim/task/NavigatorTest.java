@@ -76,19 +76,7 @@ class NavigatorTest {
     void goTo_keepsAPathThatStaysOpen_whenAWayThroughAWallOpensOnTheMap() throws Exception {
         FakeWorld world = new FakeWorld(10, 6).box(5, 0, 5.25, 4.5);   // a wall with a way round at its north end
         FakeRobot robot = world.robot("r1", 2, 1, 0);
-        OccupancyGrid map = new OccupancyGrid(0, 0, 10, 6, 0.25);
-        for (int r = 0; r < map.rows(); r++) {
-            for (int c = 0; c < map.cols(); c++) {
-                var p = map.centre(c, r);
-                for (int i = 0; i < 3; i++) {
-                    if (world.solid(p.x(), p.y())) {
-                        map.markOccupied(p.x(), p.y());
-                    } else {
-                        map.markFree(p.x(), p.y());
-                    }
-                }
-            }
-        }
+        OccupancyGrid map = world.mapped(0.25);
         Navigator nav = new Navigator(robot, map, Explorer.CLEARANCE);
         EventLog log = new EventLog().watch(nav);
         nav.start();
