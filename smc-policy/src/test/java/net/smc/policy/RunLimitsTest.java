@@ -160,4 +160,26 @@ class RunLimitsTest {
         assertEquals(List.of(), messages(), "a stop is not an error");
         assertEquals(RunResult.Status.EXITED, cell[0].run("next.p2", "root print: 1.").status());
     }
+
+    /**
+     * One number operation whose exact result would run to hundreds of millions of digits is
+     * refused before it is worked out: no step or time limit can stop a single operation, and each
+     * of these held the cell's thread for minutes (or without end) while BigDecimal wrote the digits.
+     */
+    @Test
+    void aNumberOperationOnHugeExponents_isRefusedAtOnce() {
+        PolicyEngine cell = cell(Limits.DEFAULT);
+        List<String> overflowing = List.of("1e100000000 + 1", "1e-400000000 + 1", "1 - 1e400000000", "1 / 3e-400000000",
+                "1e400000000 / 1", "0E-400000000 + 1");
+        org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(20), () -> {
+            for (String expression : overflowing) {
+                errors.clear();
+                cell.run("huge.p2", "root print: " + expression + ".");
+                assertEquals(List.of("number overflow"), messages(), expression);
+            }
+            cell.run("random.p2", "root print: (1e400000000 random) < 1e400000000.");
+            cell.run("loop.p2", "1e400000000 do: [:i | root print: i. i == 1 ifTrue: [root exit]].");
+        });
+        assertEquals(List.of("true", "0", "1"), output, "random of a huge number answers at once; a loop over one starts at once");
+    }
 }

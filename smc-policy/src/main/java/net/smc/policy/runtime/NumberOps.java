@@ -79,9 +79,13 @@ final class NumberOps {
         return BigDecimal.valueOf(ctx.runtime().random().nextLong(n));
     }
 
+    /** How many times a loop over {@code n} runs: its ceiling, 0 when not positive, at most Long.MAX_VALUE. */
     private static long count(BigDecimal n) {
         if (n.signum() <= 0) {
             return 0;
+        }
+        if (Numbers.wholeDigits(n) > 19) {
+            return Long.MAX_VALUE;   // beyond a long; rounding it first would write out all its digits
         }
         try {
             return n.setScale(0, java.math.RoundingMode.CEILING).longValueExact();

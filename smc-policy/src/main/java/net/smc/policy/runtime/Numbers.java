@@ -53,7 +53,29 @@ public final class Numbers {
         return r;
     }
 
+    /**
+     * The digits a number has before its decimal point (negative for a number below 0.1: -2 for
+     * 0.001); 0 for zero.
+     */
+    static long wholeDigits(BigDecimal n) {
+        return n.signum() == 0 ? 0 : (long) n.precision() - n.scale();
+    }
+
+    /**
+     * Refuses a sum or difference of {@code a} and {@code b} whose exact result would have more
+     * than {@link #MAX_DIGITS} digits, before computing it: {@code 1e100000000 + 1} has a hundred
+     * million, and working them out would hold the cell's thread for minutes.
+     */
+    private static void checkSum(BigDecimal a, BigDecimal b) {
+        long highest = Math.max(wholeDigits(a), wholeDigits(b));
+        long lowest = Math.max(a.scale(), b.scale());   // digits after the point the result keeps
+        if (highest + lowest + 1 > MAX_DIGITS) {
+            throw new PonderError("number overflow");
+        }
+    }
+
     public static BigDecimal add(BigDecimal a, BigDecimal b) {
+        checkSum(a, b);
         try {
             return checked(a.add(b));
         } catch (ArithmeticException e) {
@@ -62,6 +84,7 @@ public final class Numbers {
     }
 
     public static BigDecimal subtract(BigDecimal a, BigDecimal b) {
+        checkSum(a, b);
         try {
             return checked(a.subtract(b));
         } catch (ArithmeticException e) {
@@ -80,10 +103,21 @@ public final class Numbers {
         }
     }
 
-    /** Division as Ponder2: {@code divide(x, 5, HALF_UP)}. */
+    /**
+     * Division as Ponder2: {@code divide(x, 5, HALF_UP)}. A quotient below 0.000001 is 0.00000
+     * without computing it, and one with more than {@link #MAX_DIGITS} digits is refused: either
+     * would otherwise take a power of ten as large as the exponents apart ({@code 1 / 3e-400000000}).
+     */
     public static BigDecimal divide(BigDecimal a, BigDecimal b) {
         if (b.signum() == 0) {
             throw new PonderError("division by zero");
+        }
+        long quotientDigits = wholeDigits(a) - wholeDigits(b) + 1;   // |a / b| < 10^quotientDigits
+        if (a.signum() == 0 || quotientDigits <= -6) {
+            return BigDecimal.ZERO.setScale(5);
+        }
+        if (quotientDigits + 5 > MAX_DIGITS) {
+            throw new PonderError("number overflow");
         }
         try {
             return checked(a.divide(b, 5, RoundingMode.HALF_UP));
