@@ -2,6 +2,7 @@ package net.smc.demo;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -69,6 +70,11 @@ final class DemoCommand implements Callable<Integer> {
                     + "sockets on loopback, the world stepped in real time")
     String transport;
 
+    /** The slowest --speed: a hundredth of real time (slower, a udp run or a window would seem to hang). */
+    static final double MIN_SPEED = 0.01;
+    /** The shortest --limit, seconds: the mission clock counts whole milliseconds. */
+    static final double MIN_LIMIT = 0.001;
+
     DemoCommand(Io io) {
         this.io = io;
     }
@@ -94,24 +100,31 @@ final class DemoCommand implements Callable<Integer> {
         if (!(loss >= 0 && loss < 1)) {
             throw new ParameterException(spec.commandLine(), "--loss " + loss + " is out of range; it must be 0 or more and below 1");
         }
-        if (!(speed > 0) || Double.isInfinite(speed)) {
-            throw new ParameterException(spec.commandLine(), "--speed " + speed + " must be a positive number");
+        if (!(speed >= MIN_SPEED) || Double.isInfinite(speed)) {
+            throw new ParameterException(spec.commandLine(), "--speed " + speed + " must be a number of at least " + MIN_SPEED
+                    + " (mission seconds per wall second)");
         }
-        if (limit != null && (!(limit > 0) || limit > 86_400)) {
-            throw new ParameterException(spec.commandLine(), "--limit " + limit + " must be above 0 and at most 86400 seconds");
+        if (limit != null && (!(limit >= MIN_LIMIT) || limit > 86_400)) {
+            throw new ParameterException(spec.commandLine(), "--limit " + limit + " must be at least " + MIN_LIMIT
+                    + " (1 ms) and at most 86400 seconds");
         }
         Path dir = OutFolder.make(spec, io.workingDir(), out);
         if (scenario.equals("reconnaissance")) {
             try {
                 return new ReconnaissanceDemo(io).run(seed, loss, limit == null ? -1 : Math.round(limit * 1000), gui, speed, dir);
             } catch (IOException e) {
-                io.stderr().println("smc demo: " + e.getMessage());
+                io.stderr().println("smc demo: " + OutFolder.reason(e));
                 return 1;
             }
         }
         long limitMillis = Math.round((limit == null ? 180 : limit) * 1000);
         if (transport.equals("udp")) {
-            return new UdpRescueDemo(io).run(seed, dir, loss, limitMillis, speed);
+            try {
+                return new UdpRescueDemo(io).run(seed, dir, loss, limitMillis, speed);
+            } catch (IOException e) {
+                io.stderr().println("smc demo: " + OutFolder.reason(e));
+                return 1;
+            }
         }
         RescueScenario.Settings settings = RescueScenario.Settings.of(seed).withLoss(loss).withLimit(limitMillis)
                 .withSecurity(TeamSimulation.Security.REAL).withFilm(GifRecorder.Settings.defaults());
@@ -133,9 +146,14 @@ final class DemoCommand implements Callable<Integer> {
         RescueScenario.Outcome outcome = rescue.finish();
         double wallSeconds = (System.nanoTime() - wall) / 1e9;
         BufferedImage png = new WorldPainter().render(rescue.world(), rescue.scene(), 1200, 860);
-        ImageIO.write(png, "png", dir.resolve("rescue.png").toFile());
-        rescue.film().orElseThrow().write(dir.resolve("rescue.gif"));
-        rescue.timeline().writeCsv(dir.resolve("rescue-timeline.csv"));
+        try {
+            writePng(png, dir.resolve("rescue.png"));
+            rescue.film().orElseThrow().write(dir.resolve("rescue.gif"));
+            rescue.timeline().writeCsv(dir.resolve("rescue-timeline.csv"));
+        } catch (IOException e) {
+            io.stderr().println("smc demo: cannot write the run's files in " + dir + ": " + OutFolder.reason(e));
+            return 1;
+        }
         io.stdout().println(String.format(Locale.ROOT, "%.1f s of mission time in %.1f s (%.1fx real time); files in %s",
                 outcome.missionMillis() / 1000.0, wallSeconds, outcome.missionMillis() / 1000.0 / wallSeconds, dir));
         rescue.diagnostics().forEach((vehicle, errors) -> errors.forEach(e -> io.stderr().println(vehicle + ": " + e)));
@@ -145,6 +163,14 @@ final class DemoCommand implements Callable<Integer> {
         }
         io.stdout().println("failed: " + outcome.reason());
         return 1;
+    }
+
+    /** Writes {@code image} as a PNG file, failing with the file named when it cannot be (a folder of that name, say). */
+    static void writePng(BufferedImage image, Path file) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new java.nio.file.FileSystemException(file.toString(), null, "a folder of that name is there");
+        }
+        ImageIO.write(image, "png", file.toFile());
     }
 
     private void runWithWindow(RescueScenario rescue) throws InterruptedException {

@@ -214,7 +214,7 @@ final class KeysCommand implements Callable<Integer> {
             writePrivate(keyFile, KeyFiles.privateKeyText(key, use, comment), force);
             write(pubFile, KeyFiles.publicKeyText(key.verificationKey(), comment), force);
         } catch (IOException e) {
-            return failed(command, "cannot write: " + e);
+            return failed(command, "cannot write in '" + target + "': " + OutFolder.reason(e));
         }
         io.stdout().println("wrote " + keyFile + " (private: keep it secret)");
         io.stdout().println("wrote " + pubFile);
@@ -239,7 +239,7 @@ final class KeysCommand implements Callable<Integer> {
         } catch (KeyFileException e) {
             return failed(command, e.getMessage());
         } catch (IOException e) {
-            return failed(command, "cannot read: " + e);
+            return failed(command, "cannot read '" + inputs.get(1) + "': " + OutFolder.reason(e));
         }
         try {
             SigningKey authority = KeyFiles.readPrivateKey(inputs.get(0), KeyFiles.Use.AUTHORITY);
@@ -252,7 +252,7 @@ final class KeysCommand implements Callable<Integer> {
         } catch (KeyFileException e) {
             return failed(command, e.getMessage());
         } catch (IOException e) {
-            return failed(command, "cannot write: " + e);
+            return failed(command, "cannot write '" + out + "': " + OutFolder.reason(e));
         }
     }
 
@@ -286,7 +286,7 @@ final class KeysCommand implements Callable<Integer> {
         } catch (KeyFileException e) {
             return failed(command, e.getMessage());
         } catch (IOException e) {
-            return failed(command, "cannot read: " + e);
+            return failed(command, "cannot read '" + file + "': " + OutFolder.reason(e));
         }
     }
 
@@ -345,8 +345,16 @@ final class KeysCommand implements Callable<Integer> {
         }
     }
 
+    /** --force replaces a file, never a folder (an empty one would go without a word). */
+    private static void refuseFolder(Path file) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new java.nio.file.FileSystemException(file.toString(), null, "a folder of that name is there; --force replaces files only");
+        }
+    }
+
     /** Writes a private key readable by its owner only, where the file system has POSIX permissions. */
     private static void writePrivate(Path file, String text, boolean replace) throws IOException {
+        refuseFolder(file);
         if (replace) {
             Files.deleteIfExists(file);
         }
@@ -359,6 +367,7 @@ final class KeysCommand implements Callable<Integer> {
     }
 
     private static void write(Path file, String text, boolean replace) throws IOException {
+        refuseFolder(file);
         if (replace) {
             Files.writeString(file, text);
         } else {

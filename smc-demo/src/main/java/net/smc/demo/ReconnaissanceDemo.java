@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
 
-import javax.imageio.ImageIO;
 
 import net.smc.core.mission.MissionException;
 import net.smc.sim.arena.ArenaException;
@@ -67,7 +66,7 @@ final class ReconnaissanceDemo {
         ReconnaissanceOutcome outcome = recon.finish();
         double wallSeconds = (System.nanoTime() - wall) / 1e9;
         BufferedImage map = new WorldPainter().render(recon.world(), recon.hazardMapScene(), WIDTH, HEIGHT);
-        ImageIO.write(map, "png", dir.resolve("reconnaissance-map.png").toFile());
+        DemoCommand.writePng(map, dir.resolve("reconnaissance-map.png"));
         recon.film().orElseThrow().write(dir.resolve("reconnaissance.gif"));
         recon.timeline().writeCsv(dir.resolve("reconnaissance-timeline.csv"));
         io.stdout().println(String.format(Locale.ROOT, "%.1f s of mission time in %.1f s (%.1fx real time); files in %s",

@@ -82,7 +82,10 @@ final class SetupTimeCommand implements Callable<Integer> {
             description = "distributed, centralised, or both (default: ${DEFAULT-VALUE}).")
     List<String> schemes;
 
-    @Option(names = "--runs", defaultValue = "20", description = "Runs per point (default: ${DEFAULT-VALUE}).")
+    /** The most runs a point may have: a million runs of the smallest point take days. */
+    static final int MAX_RUNS = 100_000;
+
+    @Option(names = "--runs", defaultValue = "20", description = "Runs per point, 1 to 100,000 (default: ${DEFAULT-VALUE}).")
     int runs;
 
     @Option(names = "--seed", defaultValue = "1", description = "Seed of the first run (default: ${DEFAULT-VALUE}).")
@@ -378,8 +381,8 @@ final class SetupTimeCommand implements Callable<Integer> {
     }
 
     private void checkArguments() {
-        if (runs < 1) {
-            throw new ParameterException(spec.commandLine(), "--runs " + runs + ": it must be 1 or more");
+        if (runs < 1 || runs > MAX_RUNS) {
+            throw new ParameterException(spec.commandLine(), "--runs " + runs + ": it must be 1 to " + MAX_RUNS);
         }
         if (jobs != null && jobs < 1) {
             throw new ParameterException(spec.commandLine(), "--jobs " + jobs + ": it must be 1 or more");

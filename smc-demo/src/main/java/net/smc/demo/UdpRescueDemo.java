@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
 
-import javax.imageio.ImageIO;
 
 import net.smc.core.transport.udp.UdpCounters;
 import net.smc.sim.render.GifRecorder;
@@ -54,7 +53,7 @@ final class UdpRescueDemo {
         }
         double wallSeconds = (System.nanoTime() - wall) / 1e9;
         BufferedImage png = new WorldPainter().render(rescue.world(), rescue.scene(), 1200, 860);
-        ImageIO.write(png, "png", dir.resolve("rescue.png").toFile());
+        DemoCommand.writePng(png, dir.resolve("rescue.png"));
         rescue.film().orElseThrow().write(dir.resolve("rescue.gif"));
         rescue.timeline().writeCsv(dir.resolve("rescue-timeline.csv"));
         io.stdout().println(String.format(Locale.ROOT, "%.1f s of mission time in %.1f s of wall time (x%.2f); files in %s",

@@ -5,6 +5,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import net.smc.core.mission.Colocation;
 import net.smc.core.mission.ManagementTree;
@@ -118,8 +119,11 @@ final class ValidateCommand implements Callable<Integer> {
         }
         out.println("management tree:");
         ManagementTree tree = mission.tree();
+        Map<String, Integer> depths = tree.depths();
         for (String role : tree.depthFirst()) {
-            out.println("  " + "  ".repeat(tree.depthOf(role)) + role);
+            int depth = depths.get(role);
+            // indented by its level, up to MAX_INDENT levels (a chain of thousands of managers is valid)
+            out.println("  " + "  ".repeat(Math.min(depth, MAX_INDENT)) + role + (depth > MAX_INDENT ? "  (level " + depth + ")" : ""));
         }
         out.println("colocation:");
         Colocation colocation = mission.colocation();
@@ -133,6 +137,9 @@ final class ValidateCommand implements Callable<Integer> {
             out.println("  " + String.join(" and ", rule.roles()) + " share a vehicle, one active at a time");
         }
     }
+
+    /** The deepest level the listing of the management tree indents; deeper roles name their level. */
+    static final int MAX_INDENT = 20;
 
     private static String pad(String text, int width) {
         return text + " ".repeat(width - text.length());

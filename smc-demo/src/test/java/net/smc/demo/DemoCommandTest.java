@@ -46,6 +46,28 @@ class DemoCommandTest {
         assertEquals("not a folder", Files.readString(file), "left as it was");
     }
 
+    /** A folder the run could not write its files in is refused before the run, not after it. */
+    @Test
+    void anOutTheRunCannotWriteIn_isAUsageErrorBeforeTheRun() {
+        Smc.Result r = Smc.in(PROJECT).run("demo", "rescue", "--out", "/proc/sys");
+        assertEquals(2, r.status(), r.out() + r.err());
+        assertTrue(r.err().contains("--out '/proc/sys': cannot write files in it: "), r.err());
+        assertTrue(!r.out().contains("rescue of a wounded soldier"), "nothing is run:\n" + r.out());
+        assertTrue(!r.err().contains("Exception"), r.err());
+    }
+
+    /** An output file whose name a folder holds ends the run with its name, not a stack trace. */
+    @Test
+    void anOutputFileThatIsAFolder_endsTheRunNamingIt(@TempDir Path out) throws Exception {
+        Files.createDirectories(out.resolve("rescue.png"));
+        Smc.Result r = Smc.in(PROJECT).run("demo", "--limit", "1", "--out", out.toString());
+        assertEquals(1, r.status(), r.out() + r.err());
+        assertTrue(r.err().contains("smc demo: cannot write the run's files in " + out + ": a folder of that name is there: "
+                + out.resolve("rescue.png")), r.err());
+        assertTrue(!r.err().contains("Exception"), r.err());
+        assertTrue(Files.isDirectory(out.resolve("rescue.png")), "the folder is left as it was");
+    }
+
     @Test
     void rescue_thatRunsOutOfTime_exitsOne_withTheReason(@TempDir Path out) {
         Smc.Result r = Smc.in(PROJECT).run("demo", "--limit", "5", "--out", out.toString());
@@ -95,10 +117,13 @@ class DemoCommandTest {
     @CsvSource(delimiter = '|', value = {
         "burglary|unknown scenario 'burglary'",
         "--loss=1.5|--loss 1.5 is out of range",
-        "--speed=0|--speed 0.0 must be a positive number",
+        "--speed=0|--speed 0.0 must be a number of at least 0.01",
+        "--transport=udp --speed=1e-300|--speed 1.0E-300 must be a number of at least 0.01",
         "--transport=carrier-pigeon|--transport 'carrier-pigeon' is unknown",
-        "--limit=-1|--limit -1.0 must be above 0",
-        "reconnaissance --limit=0|--limit 0.0 must be above 0",
+        "--limit=-1|--limit -1.0 must be at least 0.001 (1 ms)",
+        "--limit=0.0001|--limit 1.0E-4 must be at least 0.001 (1 ms)",
+        "reconnaissance --limit=0|--limit 0.0 must be at least 0.001 (1 ms)",
+        "reconnaissance --limit=0.0001|--limit 1.0E-4 must be at least 0.001 (1 ms)",
         "reconnaissance --loss=-0.1|--loss -0.1 is out of range",
         "reconnaissance --transport=udp|--transport udp is available for the rescue only",
         "--seed=many|many",

@@ -316,4 +316,29 @@ class KeysCommandTest {
         }
         assertTrue(result.out().contains("Exit status:"), result.out());
     }
+
+    /** A file that is not UTF-8 text is refused naming the file and its first bad byte. */
+    @Test
+    void showingAFileThatIsNotText_namesTheFileAndItsFirstBadByte() throws Exception {
+        Path garbage = dir.resolve("garbage.bin");
+        Files.write(garbage, new byte[] {'k', 'e', 'y', (byte) 0xFF, 0x00});
+
+        Smc.Result result = smc.run("keys", "show", "garbage.bin");
+
+        assertEquals(1, result.status(), result.err());
+        assertTrue(result.err().contains("cannot read '" + garbage + "': not valid UTF-8: byte 0xFF at byte offset 3 (line 1)"),
+                result.err());
+    }
+
+    /** --force replaces a key file, not a folder that has the key's name (an empty one went without a word). */
+    @Test
+    void forceDoesNotReplaceAFolderWithTheKeysName() throws Exception {
+        Files.createDirectories(dir.resolve("keys/authority.key"));
+
+        Smc.Result result = smc.run("keys", "authority", "--out", "keys", "--force");
+
+        assertEquals(1, result.status(), result.err());
+        assertTrue(result.err().contains("a folder of that name is there; --force replaces files only"), result.err());
+        assertTrue(Files.isDirectory(dir.resolve("keys/authority.key")), "the folder is left as it was");
+    }
 }

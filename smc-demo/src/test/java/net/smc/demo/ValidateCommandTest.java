@@ -88,6 +88,38 @@ class ValidateCommandTest {
         assertEquals(1, result.status());
     }
 
+    /**
+     * A management chain of 3,000 roles is a valid tree: it validates, and the listing indents
+     * the first levels and names the level of deeper roles (the tree was walked by recursion, and
+     * such a chain overflowed the stack; each role's depth was found by a scan of every role).
+     */
+    @Test
+    void aChainOfThousandsOfManagers_validates_andIsListed() throws Exception {
+        int n = 3000;
+        StringBuilder cls = new StringBuilder("<xml><missionClassParameters><missionClassName>Chain</missionClassName>"
+                + "</missionClassParameters><constraints><cardinality/><colocation/></constraints><missionParameters>"
+                + "<comTimeout>int</comTimeout><failureTimeout>int</failureTimeout></missionParameters>\n"
+                + "<commanderBehaviour><roleManagement><manages>r1</manages></roleManagement></commanderBehaviour>\n");
+        StringBuilder instance = new StringBuilder("<xml><missionInstanceParameters><missionInstanceName>C</missionInstanceName>"
+                + "<missionClass href=\"chain.class.xml\">Chain</missionClass></missionInstanceParameters><missionParameters>"
+                + "<comTimeout>500</comTimeout><failureTimeout>3000</failureTimeout></missionParameters>\n"
+                + "<commander><policy>policy:/roles/commander/mission</policy></commander>\n");
+        for (int i = 1; i <= n; i++) {
+            cls.append("<r").append(i).append("Behaviour><roleManagement>")
+                    .append(i < n ? "<manages>r" + (i + 1) + "</manages>" : "").append("</roleManagement></r").append(i).append("Behaviour>\n");
+            instance.append("<r").append(i).append("><policy>policy:/roles/relay/mission</policy></r").append(i).append(">\n");
+        }
+        smc.file("chain.class.xml", cls.append("</xml>\n").toString());
+        String file = smc.file("chain.instance.xml", instance.append("</xml>\n").toString());
+
+        Smc.Result result = smc.run("validate", "--repository", REPOSITORY, file);
+
+        assertEquals(0, result.status(), result.err());
+        List<String> lines = result.out().lines().toList();
+        assertTrue(lines.contains("  " + "  ".repeat(20) + "r20"), "level 20 indented");
+        assertTrue(lines.contains("  " + "  ".repeat(20) + "r3000  (level 3000)"), "the deepest role names its level");
+    }
+
     @Test
     void classOutsideTheInstancesFolder_isRefusedUnlessAllowedWithAllowPath() throws Exception {
         Files.createDirectories(dir.resolve("classes"));

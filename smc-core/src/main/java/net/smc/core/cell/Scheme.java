@@ -1,6 +1,6 @@
 package net.smc.core.cell;
 
-import java.util.Locale;
+import net.smc.core.mission.TeamParameters;
 
 /**
  * How a team organises its management (the comparison of the paper's section V).
@@ -22,12 +22,6 @@ public enum Scheme {
      * @throws IllegalArgumentException naming the value and the accepted ones
      */
     public static Scheme parse(String text) {
-        String t = text.trim().toLowerCase(Locale.ROOT);
-        return switch (t) {
-            case "distributed" -> DISTRIBUTED;
-            case "centralised", "centralized" -> CENTRALISED;
-            default -> throw new IllegalArgumentException("scheme '" + text
-                    + "' is not known; it must be 'distributed' or 'centralised'");
-        };
+        return TeamParameters.scheme(text).equals("distributed") ? DISTRIBUTED : CENTRALISED;
     }
 }

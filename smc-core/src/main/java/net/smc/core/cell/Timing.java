@@ -2,6 +2,7 @@ package net.smc.core.cell;
 
 import net.smc.core.mission.Mission;
 import net.smc.core.mission.Parameter;
+import net.smc.core.mission.TeamParameters;
 
 /**
  * The protocol's times, all derived from the mission's {@code comTimeout} (the heartbeat period,
@@ -33,16 +34,9 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
     public static final int ROSTER_TICKS = 4;
 
     public Timing {
-        if (comTimeoutMillis < 1) {
-            throw new IllegalArgumentException("comTimeout is " + comTimeoutMillis + " ms; it must be at least 1 ms");
-        }
-        if (failureTimeoutMillis < 3 * comTimeoutMillis) {
-            throw new IllegalArgumentException("failureTimeout is " + failureTimeoutMillis + " ms; it must be at least"
-                    + " three times comTimeout (" + comTimeoutMillis + " ms), or one lost heartbeat would look like a failure");
-        }
-        if (backups < 0 || backups > 8) {
-            throw new IllegalArgumentException("backups is " + backups + "; it must be 0 to 8");
-        }
+        TeamParameters.timing(comTimeoutMillis, failureTimeoutMillis, backups).ifPresent(problem -> {
+            throw new IllegalArgumentException(problem.message());
+        });
     }
 
     /**
@@ -52,25 +46,18 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
      * @throws IllegalArgumentException naming the parameter when one is missing or not a number
      */
     public static Timing of(Mission mission) {
-        return new Timing(number(mission, "comTimeout"), number(mission, "failureTimeout"),
-                mission.parameter("backups").map(p -> (int) asLong(p)).orElse(1));
+        long backups = mission.parameter("backups").map(p -> TeamParameters.millis(p.name(), p.value())).orElse(1L);
+        TeamParameters.timing(number(mission, "comTimeout"), number(mission, "failureTimeout"), backups)
+                .ifPresent(problem -> {
+                    throw new IllegalArgumentException(problem.message());
+                });
+        return new Timing(number(mission, "comTimeout"), number(mission, "failureTimeout"), (int) backups);
     }
 
     private static long number(Mission mission, String name) {
         Parameter p = mission.parameter(name).orElseThrow(() -> new IllegalArgumentException("mission '"
                 + mission.instanceName() + "' has no parameter '" + name + "'; the team protocols need it (ms)"));
-        return asLong(p);
-    }
-
-    private static long asLong(Parameter p) {
-        Object v = p.value();
-        if (v instanceof Number n) {
-            return n.longValue();
-        }
-        if (v instanceof java.time.Duration d) {
-            return d.toMillis();
-        }
-        throw new IllegalArgumentException("mission parameter '" + p.name() + "' is " + v + "; it must be a number of ms");
+        return TeamParameters.millis(p.name(), p.value());
     }
 
     /**

@@ -1,6 +1,8 @@
 package net.smc.core.mission;
 
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import net.smc.core.mission.ClassSpec.BoundDecl;
 import net.smc.core.mission.ClassSpec.ParamDecl;
 import net.smc.core.mission.ClassSpec.Ref;
@@ -32,6 +34,7 @@ final class InstanceRules {
         if (spec != null) {
             rules.className();
             rules.parameters();
+            rules.teamParameters();
             rules.roles();
         }
         for (RoleEntry role : instance.roles()) {
@@ -76,6 +79,46 @@ final class InstanceRules {
                         + (decl.type() == null ? "" : " (" + decl.type().xmlName() + ")")
                         + "; an instance gives every parameter of its class a value");
             }
+        }
+    }
+
+    /**
+     * The parameters the team protocols read keep their rules ({@link TeamParameters}): a mission
+     * that breaks one would load here and be refused by every cell. Checked when their values are
+     * of their declared types (a wrong type is reported already).
+     */
+    private void teamParameters() {
+        Map<String, Object> values = new HashMap<>();
+        Map<String, ParamValue> at = new HashMap<>();
+        for (ParamValue value : instance.parameters()) {
+            ParamDecl decl = spec.parameter(value.name());
+            if (decl != null && decl.type() != null) {
+                try {
+                    values.put(value.name(), decl.type().parse(value.text()));
+                    at.put(value.name(), value);
+                } catch (IllegalArgumentException e) {
+                    return;
+                }
+            }
+        }
+        if (values.get("scheme") instanceof String scheme) {
+            try {
+                TeamParameters.scheme(scheme);
+            } catch (IllegalArgumentException e) {
+                reporter.textError(at.get("scheme").at(), e.getMessage() + "; the team protocols read parameter 'scheme'");
+            }
+        }
+        if (!values.containsKey("comTimeout") || !values.containsKey("failureTimeout")) {
+            return;
+        }
+        try {
+            long com = TeamParameters.millis("comTimeout", values.get("comTimeout"));
+            long failure = TeamParameters.millis("failureTimeout", values.get("failureTimeout"));
+            long backups = values.containsKey("backups") ? TeamParameters.millis("backups", values.get("backups")) : 1;
+            TeamParameters.timing(com, failure, backups).ifPresent(problem -> reporter.textError(at.get(problem.parameter()).at(),
+                    problem.message() + "; the team protocols read parameter '" + problem.parameter() + "'"));
+        } catch (IllegalArgumentException e) {
+            // a value of another type than the protocols read (a string for a time): a cell names it
         }
     }
 

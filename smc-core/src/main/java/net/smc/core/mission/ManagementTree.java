@@ -5,9 +5,11 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Deque;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * Who manages whom (the paper's Fig. 5): a tree rooted at the commander. A vehicle holding a role
@@ -56,7 +58,7 @@ public record ManagementTree(String root, Map<String, List<String>> children) {
             }
         }
         ManagementTree tree = new ManagementTree(Mission.COMMANDER, children);
-        List<String> reached = tree.breadthFirst();
+        Set<String> reached = new java.util.HashSet<>(tree.breadthFirst());
         for (String role : children.keySet()) {
             if (!reached.contains(role)) {
                 throw new IllegalArgumentException("role '" + role + "' cannot be reached from the commander; "
@@ -83,30 +85,50 @@ public record ManagementTree(String root, Map<String, List<String>> children) {
 
     /** The roles level by level from the commander, siblings in the class file's order. */
     public List<String> breadthFirst() {
-        List<String> order = new ArrayList<>();
+        Set<String> order = new LinkedHashSet<>();
         Deque<String> queue = new ArrayDeque<>(List.of(root));
         while (!queue.isEmpty() && order.size() <= children.size()) {
             String role = queue.removeFirst();
-            if (!order.contains(role)) {
-                order.add(role);
+            if (order.add(role)) {
                 queue.addAll(childrenOf(role));
             }
         }
-        return order;
+        return List.copyOf(order);
     }
 
-    /** The roles in depth-first pre-order (the order a listing indents them). */
+    /**
+     * The roles in depth-first pre-order (the order a listing indents them). Walked with a stack of
+     * its own, not by recursion: a chain of thousands of managers is a valid tree.
+     */
     public List<String> depthFirst() {
-        List<String> order = new ArrayList<>();
-        visit(root, order);
-        return order;
+        Set<String> order = new LinkedHashSet<>();
+        Deque<String> stack = new ArrayDeque<>(List.of(root));
+        while (!stack.isEmpty()) {
+            String role = stack.pop();
+            if (order.add(role)) {
+                List<String> below = childrenOf(role);
+                for (int i = below.size() - 1; i >= 0; i--) {
+                    stack.push(below.get(i));   // the first child on top: visited first
+                }
+            }
+        }
+        return List.copyOf(order);
     }
 
-    private void visit(String role, List<String> order) {
-        if (!order.contains(role)) {
-            order.add(role);
-            childrenOf(role).forEach(child -> visit(child, order));
+    /** Every role reached from the commander with how many managers are above it, in one walk. */
+    public Map<String, Integer> depths() {
+        Map<String, Integer> depths = new LinkedHashMap<>();
+        Deque<String> queue = new ArrayDeque<>(List.of(root));
+        depths.put(root, 0);
+        while (!queue.isEmpty()) {
+            String role = queue.removeFirst();
+            for (String child : childrenOf(role)) {
+                if (depths.putIfAbsent(child, depths.get(role) + 1) == null) {
+                    queue.addLast(child);
+                }
+            }
         }
+        return depths;
     }
 
     /** How many managers are above {@code role}: 0 for the commander. */

@@ -21,7 +21,7 @@ import net.smc.policy.lang.Unit;
  * Whether a policy URI resolves in the repository and its file parses and fits one policy reply,
  * so that a mission never reaches a vehicle with a policy that cannot load or cannot be sent. The file is parsed, not run: running it needs
  * the role's managed objects. Includes resolve as a cell resolves them (beside the including file,
- * then in the repository). Answers are remembered per URI: roles often share a policy.
+ * then in the repository), and never outside the repository's folder. Answers are remembered per URI: roles often share a policy.
  */
 final class PolicyCheck {
     private final PolicyRepository repository;
@@ -75,6 +75,12 @@ final class PolicyCheck {
                 + "; every policy must parse");
     }
 
+    /** Whether {@code file} lies in the repository's folder (an include beside its file may not leave it). */
+    private boolean inRepository(Path file) {
+        Path root = repository.root().toAbsolutePath().normalize();
+        return file.toAbsolutePath().normalize().startsWith(root);
+    }
+
     private IncludeResolver.Included include(String name, String from, Map<String, Path> files) {
         Path including = files.get(from);
         Optional<Path> found;
@@ -82,7 +88,8 @@ final class PolicyCheck {
             if (PolicyRepository.isUri(name)) {
                 Path file = repository.pathOf(name);
                 found = Files.isRegularFile(file) ? Optional.of(file) : Optional.empty();
-            } else if (including != null && Files.isRegularFile(including.resolveSibling(name))) {
+            } else if (including != null && inRepository(including.resolveSibling(name))
+                    && Files.isRegularFile(including.resolveSibling(name))) {
                 found = Optional.of(including.resolveSibling(name).normalize());
             } else {
                 found = repository.find(name);

@@ -1,7 +1,6 @@
 package net.smc.core.security;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -250,7 +249,7 @@ public final class KeyFiles {
         if (size > MAX_FILE_BYTES) {
             throw new KeyFileException(path + ": " + size + " bytes; a key or credential file is at most " + MAX_FILE_BYTES);
         }
-        return Files.readString(path, StandardCharsets.UTF_8);
+        return net.smc.policy.lang.SourceFiles.decode(Files.readAllBytes(path));
     }
 
     public static SigningKey readPrivateKey(Path path) throws IOException, KeyFileException {

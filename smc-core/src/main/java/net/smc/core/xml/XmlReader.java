@@ -3,7 +3,6 @@ package net.smc.core.xml;
 import com.fasterxml.jackson.dataformat.xml.XmlFactory;
 import java.io.IOException;
 import java.io.StringReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
@@ -18,6 +17,7 @@ import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
+import net.smc.policy.lang.SourceFiles;
 
 /**
  * Reads a document into a tree of {@link XmlElement}s that keep their positions, through the Stax
@@ -57,8 +57,10 @@ public final class XmlReader {
     }
 
     /**
-     * The text of {@code file} (UTF-8), refused unread when it is larger than
-     * {@link XmlLimits#maxFileBytes()}.
+     * The text of {@code file}: UTF-8 (a leading byte-order mark skipped), or UTF-16 with a
+     * byte-order mark; refused unread when it is larger than {@link XmlLimits#maxFileBytes()}, and
+     * refused naming the first byte that is not part of a character of its encoding (its offset and
+     * line), whatever encoding the XML declaration names.
      */
     public String readFile(Path file) throws IOException {
         long size = Files.size(file);
@@ -66,7 +68,7 @@ public final class XmlReader {
             throw new IOException("file of " + size + " bytes is larger than the limit of " + limits.maxFileBytes()
                     + " bytes for a " + document);
         }
-        return Files.readString(file, StandardCharsets.UTF_8);
+        return SourceFiles.decode(Files.readAllBytes(file));
     }
 
     /**
@@ -87,9 +89,14 @@ public final class XmlReader {
         } catch (Refused e) {
             throw new XmlRefusal(e.line, e.column, e.getMessage());
         } catch (XMLStreamException e) {
-            Location at = e.getLocation();
-            throw new XmlRefusal(at == null ? 1 : at.getLineNumber(), at == null ? 1 : at.getColumnNumber(),
-                    "not well-formed XML: " + cause(e) + "; a " + document + " must be well-formed XML");
+            throw notWellFormed(e);
+        } catch (RuntimeException e) {
+            // Woodstox reports some errors in text (a stray '&', an unknown entity) only when the
+            // text is asked for, wrapped unchecked
+            if (e.getCause() instanceof XMLStreamException x) {
+                throw notWellFormed(x);
+            }
+            throw e;
         } finally {
             close(reader);
         }
@@ -127,6 +134,12 @@ public final class XmlReader {
             }
         }
         return root;
+    }
+
+    private XmlRefusal notWellFormed(XMLStreamException e) {
+        Location at = e.getLocation();
+        return new XmlRefusal(at == null ? 1 : at.getLineNumber(), at == null ? 1 : at.getColumnNumber(),
+                "not well-formed XML: " + cause(e) + "; a " + document + " must be well-formed XML");
     }
 
     /** Woodstox appends " at [row,col ...]" to its messages; the position is reported apart. */
@@ -194,6 +207,9 @@ public final class XmlReader {
 
         void text(XMLStreamReader reader) {
             String chunk = reader.getText();
+            if (text.isEmpty() && chunk.isBlank()) {
+                return;   // the layout between elements: not text, and not counted against the limit
+            }
             if (textLine == 0 && !chunk.isBlank()) {
                 Location at = reader.getLocation();
                 int line = at.getLineNumber();

@@ -241,6 +241,45 @@ class MissionLoaderTest {
         assertTrue(e.getMessage().contains("'x' is not an int") && e.getMessage().contains("'y' is not an int"), e.getMessage());
     }
 
+    /** Blank lines between elements are layout, not text: they count against no element's text limit. */
+    @Test
+    void blankLinesBetweenElements_areNotText() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml")
+                .replace("<missionParameters>", "\n".repeat(5000) + "<missionParameters>"));
+
+        assertEquals("Test", loader.load(instance).instanceName());
+    }
+
+    /** An instance file that is not UTF-8 is refused naming the first bad byte, its offset and line. */
+    @Test
+    void anInstanceFileNotInUtf8_isRefusedNamingItsFirstBadByte() throws Exception {
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = dir.resolve("latin1.instance.xml");
+        Files.write(instance, reconnaissanceInstance("reconnaissance.class.xml").replace("<xml>", "<?xml version=\"1.0\" "
+                + "encoding=\"ISO-8859-1\"?>\n<!-- Caf\u00e9 -->\n<xml>").getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+
+        IOException e = assertThrows(IOException.class, () -> loader.load(instance));
+
+        assertEquals("not valid UTF-8: byte 0xE9 at byte offset 52 (line 2) is not part of a well-formed character; save "
+                + "the file as UTF-8 (or as UTF-16 with a byte-order mark)", e.getMessage());
+    }
+
+    /** An include beside the including file may not leave the repository (an absolute path, or one through ..). */
+    @Test
+    void policyIncludeOutsideTheRepository_isNotRead() throws Exception {
+        Path outside = write("secret.p2", "root print: \"secret\".\n");
+        write("policies/roles/relay/mission.p2", "include \"" + outside.toAbsolutePath() + "\".\ninclude \"../../../secret.p2\".\n");
+        write("reconnaissance.class.xml", TABLE_III);
+        Path instance = write("reconnaissance.instance.xml", reconnaissanceInstance("reconnaissance.class.xml"));
+
+        MissionException e = assertThrows(MissionException.class, () -> loader.load(instance));
+
+        assertEquals(1, e.errors().size(), e.getMessage());
+        assertTrue(e.errors().get(0).message().startsWith("policy 'policy:/roles/relay/mission' does not parse: ")
+                && e.errors().get(0).message().contains("(and 1 more)"), e.getMessage());
+    }
+
     @Test
     void missingInstanceFile_isAnIOException_notAMissionError() {
         assertThrows(NoSuchFileException.class, () -> loader.load(dir.resolve("nowhere.instance.xml")));

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Stream;
+import net.smc.policy.lang.SourceFiles;
 
 /**
  * A folder of PonderTalk files addressed by URI: {@code policy:/roles/surveyor/assign} is the file
@@ -65,7 +66,7 @@ public final class PolicyRepository {
             return Optional.empty();
         }
         try {
-            return Optional.of(Files.readString(file));
+            return Optional.of(SourceFiles.decode(Files.readAllBytes(file)));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
