@@ -26,9 +26,13 @@ public record Parameter(String name, ParameterType type, Object value) {
             case DURATION -> Duration.class;
         };
         if (!expected.isInstance(value)) {
-            throw new IllegalArgumentException("parameter '" + name + "' of type " + type.xmlName() + " has a "
-                    + value.getClass().getSimpleName() + " value; it must be a " + expected.getSimpleName());
+            throw new IllegalArgumentException("parameter '" + name + "' of type " + type.xmlName() + " has "
+                    + withArticle(value.getClass().getSimpleName()) + " value; it must be " + withArticle(expected.getSimpleName()));
         }
+    }
+
+    private static String withArticle(String name) {
+        return ("AEIOU".indexOf(name.charAt(0)) >= 0 ? "an " : "a ") + name;
     }
 
     public int asInt() {

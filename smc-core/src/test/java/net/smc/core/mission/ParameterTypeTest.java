@@ -65,6 +65,6 @@ class ParameterTypeTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> new Parameter("comTimeout", ParameterType.INT, "500"));
 
-        assertEquals("parameter 'comTimeout' of type int has a String value; it must be a Integer", e.getMessage());
+        assertEquals("parameter 'comTimeout' of type int has a String value; it must be an Integer", e.getMessage());
     }
 }

@@ -416,14 +416,26 @@ public final class CellRuntime {
         }
     }
 
-    /** Runs a unit nested in a running one ({@code readString:}, {@code read:}); errors propagate to it. */
+    /**
+     * Runs a unit nested in a running one ({@code readString:}, {@code read:}); errors propagate to
+     * it. Counts as one nested call against the call depth limit, so that a unit that reads itself
+     * ends with that error, as a block that calls itself does.
+     */
     Object runNested(Execution ex, String source, String text, Path file) {
+        if (ex.depth >= limits().maxCallDepth()) {
+            throw new PonderError("call depth limit of " + limits().maxCallDepth() + " exceeded");
+        }
         Unit unit = parse(source, text, file);
         if (unit.hasErrors()) {
             throw new PonderError("cannot run '" + source + "': " + unit.errors().size() + " syntax error"
                     + (unit.errors().size() == 1 ? "" : "s"));
         }
-        return runStatements(unit, new VariableFrame(ex, Map.of()));
+        ex.depth++;
+        try {
+            return runStatements(unit, new VariableFrame(ex, Map.of()));
+        } finally {
+            ex.depth--;
+        }
     }
 
     /** Runs a unit's statements in order in {@code frame}; answers the last one's value (nil for none). */

@@ -61,7 +61,7 @@ interface Converter {
                 if (v instanceof Boolean) {
                     return v;
                 }
-                throw new PonderError("not a boolean: " + Numbers.abbreviate(Values.print(v)));
+                throw new PonderError("not a boolean: " + Values.describe(v));
             };
         }
         if (type == Block.class) {
@@ -98,8 +98,8 @@ interface Converter {
     }
 
     private static PonderError mismatch(int position, String selector, String owner, String wanted, Object got) {
-        return new PonderError("argument " + position + " of '" + selector + "' on " + owner + " must be a "
-                + wanted + ", got " + Values.className(got));
+        return new PonderError("argument " + position + " of '" + selector + "' on " + owner + " must be "
+                + Values.withArticle(wanted) + ", got " + Values.className(got));
     }
 
     /** Turns what a Java method returned into a PonderTalk value. */

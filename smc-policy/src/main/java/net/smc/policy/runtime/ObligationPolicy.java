@@ -111,8 +111,8 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
             runtime.policiesChanged();
         }
         active = on;
-        if (on && attachedTo.isEmpty()) {
-            attach(runtime.root());
+        if (on && attachOrder == 0) {
+            attach(runtime.root());   // the first activation of a policy never attached; one detached since stays so
         }
         return on;
     }
@@ -187,7 +187,7 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
                 if (answer != Boolean.TRUE) {
                     if (answer != Boolean.FALSE) {
                         failed(ex, "condition", new PonderError("condition answered "
-                                + Numbers.abbreviate(Values.print(answer)) + ", not a boolean", condition.pos()));
+                                + Values.describe(answer) + ", not a boolean", condition.pos()));
                     }
                     return;
                 }

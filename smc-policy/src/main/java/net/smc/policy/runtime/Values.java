@@ -133,4 +133,18 @@ public final class Values {
     public static boolean isValue(Object v) {
         return !(v instanceof ManagedObject);
     }
+
+    /**
+     * A value as an error message shows it: its printed form (shortened), a string quoted and named
+     * as one, so that {@code "true"} is not taken for the boolean.
+     */
+    static String describe(Object value) {
+        String printed = Numbers.abbreviate(print(value));
+        return value instanceof String ? "'" + printed + "' (a String)" : printed;
+    }
+
+    /** A class name with its indefinite article: {@code a String}, {@code an EventTemplate}. */
+    static String withArticle(String name) {
+        return (!name.isEmpty() && "AEIOUaeiou".indexOf(name.charAt(0)) >= 0 ? "an " : "a ") + name;
+    }
 }

@@ -91,6 +91,9 @@ final class Timer {
         long millis;
         try {
             String[] parts = time.split(":", -1);
+            if (parts.length > 3) {
+                throw new NumberFormatException();   // [hh:]mm:ss has three fields at most
+            }
             if (parts.length == 1) {
                 millis = Long.parseLong(time);
             } else {
