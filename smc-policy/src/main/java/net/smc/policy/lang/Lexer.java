@@ -72,17 +72,26 @@ public final class Lexer {
         return at < text.length() ? text.charAt(at) : '\0';
     }
 
+    /**
+     * Whether the character at {@code at} ends a line: a line feed, or a carriage return that no line
+     * feed follows (a file with the old Mac line ends has lines too, and a comment ends at each).
+     */
+    private boolean endsLine(int at) {
+        char c = text.charAt(at);
+        return c == '\n' || c == '\r' && (at + 1 >= text.length() || text.charAt(at + 1) != '\n');
+    }
+
     private void skipSpaceAndComments() {
         while (index < text.length()) {
             char c = text.charAt(index);
-            if (c == '\n') {
+            if (endsLine(index)) {
                 index++;
                 line++;
                 lineStart = index;
             } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f') {
                 index++;
             } else if (c == '/' && peek(1) == '/') {
-                while (index < text.length() && text.charAt(index) != '\n') {
+                while (index < text.length() && !endsLine(index)) {
                     index++;
                 }
             } else {
@@ -231,6 +240,7 @@ public final class Lexer {
                 index++;
             }
             if (radix < 0 || tooLong(start, at)) {
+                addNumber(start, at, BigDecimal.ZERO);   // refused already; stands in so the parser goes on
                 return;
             }
             String digits = text.substring(valueStart, index);
@@ -238,6 +248,7 @@ public final class Lexer {
                 addNumber(start, at, negate(new BigDecimal(new BigInteger(digits, radix)), negative));
             } catch (NumberFormatException e) {
                 errors.add(new SyntaxError(at, "invalid digits '" + digits + "' for radix " + radix));
+                addNumber(start, at, BigDecimal.ZERO);
             }
             return;
         }
@@ -254,6 +265,7 @@ public final class Lexer {
             }
         }
         if (tooLong(start, at)) {
+            addNumber(start, at, BigDecimal.ZERO);   // refused already; stands in so the parser goes on
             return;
         }
         String written = text.substring(start, index);
@@ -261,6 +273,7 @@ public final class Lexer {
             addNumber(start, at, new BigDecimal(written));
         } catch (NumberFormatException e) {
             errors.add(new SyntaxError(at, "number out of range '" + abbreviate(written) + "'"));
+            addNumber(start, at, BigDecimal.ZERO);
         }
     }
 
@@ -311,7 +324,7 @@ public final class Lexer {
                 index += 2;
                 continue;
             }
-            if (c == '\n') {
+            if (endsLine(index)) {
                 line++;
                 lineStart = index + 1;
             }

@@ -39,8 +39,8 @@ public final class Parser {
     /** The token after {@link #current}, once looked at; {@code null} before. */
     private Token following;
     private int depth;
-    /** Brackets opened and not yet closed by the tokens consumed so far. */
-    private int open;
+    /** The brackets the tokens consumed so far opened and did not close, innermost first. */
+    private final java.util.ArrayDeque<TokenKind> open = new java.util.ArrayDeque<>();
     /** How deep each send of the current statement is (sends are built left to right, so receivers come first). */
     private final java.util.IdentityHashMap<Node, Integer> sendDepths = new java.util.IdentityHashMap<>();
 
@@ -166,11 +166,22 @@ public final class Parser {
                 statements));
     }
 
-    /** Skips to just after the next '.' that ends a top-level statement, or to the end. */
+    /**
+     * Skips to just after the next '.' that ends a top-level statement, or to the end. A '.' inside
+     * a block separates its statements and is skipped. Inside parentheses or an array literal no
+     * '.' belongs: one there that ends its line ends the statement too (the bracket was left open,
+     * and must not swallow the rest of the unit and hide its other errors), while one with more of
+     * the line after it is a stray '.' in a statement that goes on, and is skipped.
+     */
     private void synchronize() {
         while (!check(TokenKind.EOF)) {
             Token t = advance();
-            if (t.kind() == TokenKind.DOT && open == 0) {
+            if (t.kind() != TokenKind.DOT) {
+                continue;
+            }
+            boolean endsLine = check(TokenKind.EOF) || peek().pos().line() > t.pos().line();
+            if (open.isEmpty() || open.peek() != TokenKind.LBRACKET && endsLine) {
+                open.clear();
                 return;
             }
         }
@@ -405,8 +416,8 @@ public final class Parser {
             case EOF -> {
                 return t;
             }
-            case LPAREN, LBRACKET, ARRAY_START -> open++;
-            case RPAREN, RBRACKET -> open = Math.max(0, open - 1);
+            case LPAREN, LBRACKET, ARRAY_START -> open.push(t.kind());
+            case RPAREN, RBRACKET -> open.poll();
             default -> {
             }
         }

@@ -90,7 +90,10 @@ final class Invariants {
         return reported;
     }
 
-    /** Line starts of a text, to turn 1-based line and column into an offset. */
+    /**
+     * Line starts of a text, to turn 1-based line and column into an offset. A line ends at a line
+     * feed, or at a carriage return that no line feed follows (as the lexer counts them).
+     */
     private static final class Lines {
         private final String text;
         private final List<Integer> starts = new ArrayList<>();
@@ -99,7 +102,8 @@ final class Invariants {
             this.text = text;
             starts.add(0);
             for (int i = 0; i < text.length(); i++) {
-                if (text.charAt(i) == '\n') {
+                char c = text.charAt(i);
+                if (c == '\n' || c == '\r' && (i + 1 >= text.length() || text.charAt(i + 1) != '\n')) {
                     starts.add(i + 1);
                 }
             }

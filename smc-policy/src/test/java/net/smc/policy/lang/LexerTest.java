@@ -537,7 +537,19 @@ class LexerTest {
                 new SyntaxError(new SourcePos(SOURCE, 1, 7), "unexpected character '^'"),
                 new SyntaxError(new SourcePos(SOURCE, 1, 11), "radix 40 is not between 2 and 36"),
                 new SyntaxError(new SourcePos(SOURCE, 2, 5), "unterminated string")), errors);
-        assertEquals(List.of("a", "b", "c", "d", ""), tokens.stream().map(Token::text).toList());
+        // a refused number stays as a token (value 0), so that the parser reports nothing more about it
+        assertEquals(List.of("a", "b", "c", "40r1", "d", ""), tokens.stream().map(Token::text).toList());
+    }
+
+    /** Old Mac line ends (a carriage return alone) end lines and comments as line feeds do. */
+    @Test
+    void aCarriageReturnAlone_endsALineAndAComment() {
+        List<SyntaxError> errors = new ArrayList<>();
+        List<Token> tokens = Lexer.tokenize(SOURCE, "a // note\rb\r\nc\r  \"x\ry\" d", errors);
+        assertEquals(List.of(), errors);
+        assertEquals(List.of("a", "b", "c", "x\ry", "d", ""), tokens.stream().map(Token::text).toList());
+        assertEquals(List.of(1, 2, 3, 4, 5), tokens.subList(0, 5).stream().map(t -> t.pos().line()).toList());
+        assertEquals(3, tokens.get(3).pos().column(), "columns count from the line's start");
     }
 
     @Test
