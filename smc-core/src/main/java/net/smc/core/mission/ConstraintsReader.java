@@ -147,7 +147,7 @@ final class ConstraintsReader {
             return null;
         }
         try {
-            int n = Integer.parseInt(value.strip());
+            int n = Integer.parseInt(ParameterType.asciiWhole(value.strip()));
             if (n >= 0) {
                 return n;
             }

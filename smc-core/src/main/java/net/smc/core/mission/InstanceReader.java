@@ -197,7 +197,7 @@ final class InstanceReader {
             return null;
         }
         try {
-            int n = Integer.parseInt(text);
+            int n = Integer.parseInt(ParameterType.asciiWhole(text));
             if (n >= least) {
                 return n;
             }

@@ -27,6 +27,7 @@ public enum ParameterType {
     DURATION("duration");
 
     /** Decimal notation only: Java's own syntax would also take {@code NaN}, {@code 1d} and hex. */
+    private static final Pattern WHOLE = Pattern.compile("[-+]?[0-9]+");
     private static final Pattern DECIMAL = Pattern.compile("[-+]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][-+]?\\d+)?");
     private static final Pattern SIMPLE_DURATION = Pattern.compile("(\\d{1,18})(ms|s|min|h)");
 
@@ -57,11 +58,24 @@ public enum ParameterType {
      *
      * @throws IllegalArgumentException when {@code text} is not a value of this type
      */
+    /**
+     * {@code text} when it is a whole number in ASCII digits with an optional sign; Java's parsers
+     * take the digits of every script ({@code ١} for 1), which a mission file does not.
+     *
+     * @throws NumberFormatException otherwise
+     */
+    static String asciiWhole(String text) {
+        if (!WHOLE.matcher(text).matches()) {
+            throw new NumberFormatException(text);
+        }
+        return text;
+    }
+
     public Object parse(String text) {
         try {
             return switch (this) {
-                case INT -> Integer.parseInt(text);
-                case LONG -> Long.parseLong(text);
+                case INT -> Integer.parseInt(asciiWhole(text));
+                case LONG -> Long.parseLong(asciiWhole(text));
                 case DOUBLE -> finite(text);
                 case BOOLEAN -> bool(text);
                 case STRING -> text;
