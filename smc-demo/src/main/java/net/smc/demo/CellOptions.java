@@ -61,6 +61,9 @@ final class CellOptions {
     static List<Path> readableFiles(CommandSpec spec, Path workingDir, List<Path> files) {
         List<Path> resolved = new ArrayList<>();
         for (Path given : files) {
+            if (given.toString().isEmpty()) {
+                throw new ParameterException(spec.commandLine(), "a file name is empty; name the file to read");
+            }
             Path file = workingDir.resolve(given);
             String problem = readProblem(file);
             if (problem != null) {
@@ -121,6 +124,24 @@ final class CellOptions {
                 default -> throw new TypeConversionException("'" + value + "' is neither 'allow' nor 'deny'");
             };
         }
+    }
+
+    /**
+     * The folders of {@code --allow-path}, resolved against the working directory, each checked to be a folder.
+     *
+     * @throws ParameterException naming the first that is not
+     */
+    static List<Path> allowedFolders(CommandSpec spec, Path workingDir, List<Path> folders) {
+        List<Path> resolved = new ArrayList<>();
+        for (Path given : folders) {
+            Path folder = workingDir.resolve(given);
+            if (given.toString().isEmpty() || !Files.isDirectory(folder)) {
+                throw new ParameterException(spec.commandLine(), "--allow-path '" + given + "': "
+                        + (Files.exists(folder) ? "not a folder" : "no such folder") + "; it names a folder mission files may come from");
+            }
+            resolved.add(folder);
+        }
+        return resolved;
     }
 
     /** Why {@code file} cannot be read as a regular file, or null when it can. */

@@ -62,7 +62,7 @@ public final class Main implements Callable<Integer> {
     /** {@code smc} without a command. */
     @Override
     public Integer call() {
-        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate, keys, node or status");
+        throw new ParameterException(spec.commandLine(), "no command given: use run, shell, validate, keys, node, status, demo or experiment");
     }
 
     /** The version line of {@code smc --version} and the subcommands' {@code --version}. */

@@ -136,7 +136,7 @@ final class NodeCommand implements Callable<Integer> {
         PolicyRepository repo = repository();
         NodeFiles.Node node;
         try {
-            node = new NodeFiles(io.workingDir(), allowPaths).read(key, credential, authority, mission, repo, System.currentTimeMillis());
+            node = new NodeFiles(io.workingDir(), CellOptions.allowedFolders(spec, io.workingDir(), allowPaths)).read(key, credential, authority, mission, repo, System.currentTimeMillis());
         } catch (NodeFiles.Refused e) {
             e.details().forEach(io.stderr()::println);
             io.stderr().println("smc node: " + e.getMessage());

@@ -1,9 +1,15 @@
 package net.smc.demo;
 
-import java.io.BufferedReader;
+import java.io.BufferedInputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStreamReader;
+import java.io.InputStream;
 import java.io.PrintWriter;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 
 /**
@@ -39,18 +45,38 @@ final class ShellInput {
         this.lines = lines;
     }
 
-    /** Lines read from {@code io}'s stdin; prompts go to its stdout when it is interactive. */
+    /**
+     * Lines read from {@code io}'s stdin as UTF-8; prompts go to its stdout when it is interactive.
+     * A line that is not valid UTF-8 is reported on stderr, naming its line and first bad byte, and
+     * skipped (the files of {@code smc run} are refused for the same reason; the shell goes on with
+     * the next line).
+     */
     static LineSource piped(Io io) {
-        BufferedReader reader = new BufferedReader(new InputStreamReader(io.stdin(), StandardCharsets.UTF_8));
+        InputStream in = new BufferedInputStream(io.stdin());
         PrintWriter prompts = io.interactive() ? io.stdout() : null;
         return new LineSource() {
+            private int lineNumber;
+
             @Override
             public String readLine(String prompt) throws IOException {
                 if (prompts != null) {
                     prompts.print(prompt);
                     prompts.flush();
                 }
-                return reader.readLine();
+                while (true) {
+                    byte[] line = rawLine(in);
+                    if (line == null) {
+                        return null;
+                    }
+                    lineNumber++;
+                    int bad = firstBadByte(line);
+                    if (bad < 0) {
+                        return new String(line, StandardCharsets.UTF_8);
+                    }
+                    io.stderr().println(ShellCommand.SOURCE + ":" + lineNumber + ": not valid UTF-8: byte 0x"
+                            + String.format("%02X", line[bad] & 0xff) + " at byte " + (bad + 1)
+                            + " of the line; the shell reads UTF-8, and skips the line");
+                }
             }
 
             @Override
@@ -60,6 +86,30 @@ final class ShellInput {
                 }
             }
         };
+    }
+
+    /** The bytes of the next line without its ending (a line feed, and a carriage return before it); null at the end. */
+    private static byte[] rawLine(InputStream in) throws IOException {
+        ByteArrayOutputStream line = new ByteArrayOutputStream();
+        int b = in.read();
+        if (b < 0) {
+            return null;
+        }
+        while (b >= 0 && b != '\n') {
+            line.write(b);
+            b = in.read();
+        }
+        byte[] bytes = line.toByteArray();
+        return bytes.length > 0 && bytes[bytes.length - 1] == '\r' ? java.util.Arrays.copyOf(bytes, bytes.length - 1) : bytes;
+    }
+
+    /** The index of the first byte of {@code line} that is not part of a well-formed UTF-8 character, or -1. */
+    private static int firstBadByte(byte[] line) {
+        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPORT).onUnmappableCharacter(CodingErrorAction.REPORT);
+        ByteBuffer bytes = ByteBuffer.wrap(line);
+        CoderResult result = decoder.decode(bytes, CharBuffer.allocate(line.length + 1), true);
+        return result.isError() ? bytes.position() : -1;
     }
 
     /** The next input's text (its lines, each ending in a newline), or {@code null} at the end. */

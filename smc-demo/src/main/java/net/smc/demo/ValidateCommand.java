@@ -68,8 +68,7 @@ final class ValidateCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         Path file = CellOptions.readableFiles(spec, io.workingDir(), List.of(instance)).get(0);
-        MissionLoader loader = new MissionLoader(repository(),
-                allowPaths.stream().map(p -> io.workingDir().resolve(p)).toList());
+        MissionLoader loader = new MissionLoader(repository(), CellOptions.allowedFolders(spec, io.workingDir(), allowPaths));
         Mission mission;
         try {
             mission = loader.load(file);

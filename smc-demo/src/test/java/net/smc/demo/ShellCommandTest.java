@@ -44,6 +44,19 @@ class ShellCommandTest {
         assertEquals(0, result.status());
     }
 
+    /** A line that is not UTF-8 is reported, naming its line and byte, and skipped; the shell goes on. */
+    @Test
+    void aLineThatIsNotUtf8_isReportedAndSkipped() {
+        byte[] input = "x := 2.\n\u00ff bad.\nx * 10.\n".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+
+        Smc.Result result = smc.withInputBytes(input, "shell");
+
+        assertEquals(List.of("stdin:2: not valid UTF-8: byte 0xFF at byte 1 of the line; the shell reads UTF-8, and skips the line"),
+                result.errLines());
+        assertEquals(List.of("2", "20"), result.outLines());
+        assertEquals(0, result.status());
+    }
+
     @Test
     void input_spansLinesUntilOneEndsInADot() {
         Smc.Result result = smc.withInput("y := 3\n  * 4\n  + 1.   \n\n\ny.\n", "shell");

@@ -33,9 +33,14 @@ record Smc(Path workingDir, boolean interactive) {
     }
 
     Result withInput(String stdin, String... args) {
+        return withInputBytes(stdin.getBytes(StandardCharsets.UTF_8), args);
+    }
+
+    /** Runs with {@code stdin} as raw bytes (which need not be UTF-8). */
+    Result withInputBytes(byte[] stdin, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
-        Io io = new Io(new ByteArrayInputStream(stdin.getBytes(StandardCharsets.UTF_8)),
+        Io io = new Io(new ByteArrayInputStream(stdin),
                 new PrintWriter(out, true), new PrintWriter(err, true), interactive, workingDir);
         int status = Main.commandLine(io).execute(args);
         return new Result(status, out.toString(), err.toString());

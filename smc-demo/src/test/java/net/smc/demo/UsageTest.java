@@ -142,6 +142,6 @@ class UsageTest {
         Smc.Result result = smc.run();
 
         assertEquals(2, result.status());
-        assertEquals("smc: no command given: use run, shell, validate, keys, node or status", result.errLines().get(0));
+        assertEquals("smc: no command given: use run, shell, validate, keys, node, status, demo or experiment", result.errLines().get(0));
     }
 }

@@ -121,6 +121,18 @@ class ValidateCommandTest {
     }
 
     @Test
+    void anAllowPathThatIsNoFolder_orAnEmptyInstanceName_isAUsageError() {
+        Smc.Result noFolder = smc.run("validate", "--repository", REPOSITORY, "--allow-path", "nowhere",
+                PROJECT.resolve("missions/reconnaissance.instance.xml").toString());
+        assertEquals(2, noFolder.status(), noFolder.err());
+        assertTrue(noFolder.err().contains("--allow-path 'nowhere': no such folder"), noFolder.err());
+
+        Smc.Result empty = smc.run("validate", "--repository", REPOSITORY, "");
+        assertEquals(2, empty.status(), empty.err());
+        assertTrue(empty.err().contains("a file name is empty"), empty.err());
+    }
+
+    @Test
     void classOutsideTheInstancesFolder_isRefusedUnlessAllowedWithAllowPath() throws Exception {
         Files.createDirectories(dir.resolve("classes"));
         Files.copy(PROJECT.resolve("missions/rescue.class.xml"), dir.resolve("classes/rescue.class.xml"));
