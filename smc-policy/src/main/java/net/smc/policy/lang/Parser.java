@@ -354,7 +354,11 @@ public final class Parser {
         List<String> params = new ArrayList<>();
         if (check(TokenKind.PARAM)) {
             while (check(TokenKind.PARAM)) {
-                params.add(advance().text());
+                Token param = advance();
+                if (params.contains(param.text())) {
+                    throw error(param, "block parameter ':" + param.text() + "' is named twice; each parameter has a name of its own");
+                }
+                params.add(param.text());
             }
             Token bar = peek();
             if (bar.kind() != TokenKind.BINOP || !bar.text().equals("|")) {

@@ -104,7 +104,8 @@ public final class Values {
 
     /**
      * {@code ==}: value equality for numbers (numerically), strings and booleans; identity for
-     * everything else. A string equals a non-string by the other's printed form.
+     * everything else. A string equals a non-string by the other's printed form, whichever side it
+     * is on ({@code true == "true"} as {@code "true" == true}).
      */
     public static boolean same(Object a, Object b) {
         if (a == b) {
@@ -124,7 +125,7 @@ public final class Values {
             return s.equals(print(b));
         }
         if (a instanceof Boolean) {
-            return a.equals(b);
+            return a.equals(b) || b instanceof String s && s.equals(print(a));   // as "true" == true
         }
         return false;
     }
