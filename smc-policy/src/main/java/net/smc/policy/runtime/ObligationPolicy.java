@@ -228,6 +228,10 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
         return args;
     }
 
+    /**
+     * Reports an error of a condition or an action, unless the {@code onError:} handler takes it. A
+     * handler that fails itself is reported with the error it was handling, which is not lost.
+     */
     private void failed(Execution ex, String where, PonderError error) {
         if (errorHandler != null) {
             try {
@@ -236,8 +240,13 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
             } catch (UnitAbort abort) {
                 throw abort;
             } catch (PonderError handlerError) {
+                PonderError handled = error;
                 error = handlerError.at(errorHandler.pos());
-                where = "onError";
+                SourcePos was = handled.pos();
+                runtime.report(ex, new Diagnostic(error.pos(), "ObligationPolicy: unhandled onError error: " + error.getMessage()
+                        + " (while handling the " + where + " error: " + handled.getMessage()
+                        + (was == null ? "" : " at " + was.source() + ":" + was.line() + ":" + was.column()) + ")"));
+                return;
             }
         }
         SourcePos pos = error.pos();
