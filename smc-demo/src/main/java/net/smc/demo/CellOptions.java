@@ -137,7 +137,8 @@ final class CellOptions {
             Path folder = workingDir.resolve(given);
             if (given.toString().isEmpty() || !Files.isDirectory(folder)) {
                 throw new ParameterException(spec.commandLine(), "--allow-path '" + given + "': "
-                        + (Files.exists(folder) ? "not a folder" : "no such folder") + "; it names a folder mission files may come from");
+                        + (given.toString().isEmpty() ? "is empty" : Files.exists(folder) ? "not a folder" : "no such folder")
+                        + "; it names a folder mission files may come from");
             }
             resolved.add(folder);
         }

@@ -211,6 +211,8 @@ final class KeysCommand implements Callable<Integer> {
         }
         SigningKey key = SigningKey.generate(random);
         try {
+            refuseFolder(keyFile);   // both before either is written: a failed pair leaves the old one whole
+            refuseFolder(pubFile);
             writePrivate(keyFile, KeyFiles.privateKeyText(key, use, comment), force);
             write(pubFile, KeyFiles.publicKeyText(key.verificationKey(), comment), force);
         } catch (IOException e) {
@@ -241,16 +243,21 @@ final class KeysCommand implements Callable<Integer> {
         } catch (IOException e) {
             return failed(command, "cannot read '" + inputs.get(1) + "': " + OutFolder.reason(e));
         }
+        SigningKey authority;
         try {
-            SigningKey authority = KeyFiles.readPrivateKey(inputs.get(0), KeyFiles.Use.AUTHORITY);
+            authority = KeyFiles.readPrivateKey(inputs.get(0), KeyFiles.Use.AUTHORITY);
+        } catch (KeyFileException e) {
+            return failed(command, e.getMessage());
+        } catch (IOException e) {
+            return failed(command, "cannot read '" + inputs.get(0) + "': " + OutFolder.reason(e));
+        }
+        try {
             Credential credential = Credential.issue(claims, authority);
             write(out, KeyFiles.credentialText(credential, "vehicle " + o.id + ", mission " + o.mission), o.force);
             io.stdout().println("wrote " + out + ": credential of '" + o.id + "' for mission '" + o.mission + "', valid from "
                     + Instant.ofEpochMilli(claims.notBeforeMillis()) + " until " + Instant.ofEpochMilli(claims.expiresMillis())
                     + ", issued by authority " + authority.verificationKey().id());
             return 0;
-        } catch (KeyFileException e) {
-            return failed(command, e.getMessage());
         } catch (IOException e) {
             return failed(command, "cannot write '" + out + "': " + OutFolder.reason(e));
         }

@@ -55,8 +55,14 @@ final class OutFolder {
         if (e instanceof AccessDeniedException a) {
             return "permission denied: " + a.getFile();
         }
-        if (e instanceof FileSystemException f && f.getReason() != null) {
-            return f.getReason() + (f.getFile() == null ? "" : ": " + f.getFile());
+        if (e instanceof java.nio.file.FileAlreadyExistsException f) {
+            return "something of that name is there already: " + f.getFile();
+        }
+        if (e instanceof java.nio.file.NotDirectoryException f) {
+            return "not a folder: " + f.getFile();
+        }
+        if (e instanceof FileSystemException f) {
+            return (f.getReason() != null ? f.getReason() : e.getClass().getSimpleName()) + (f.getFile() == null ? "" : ": " + f.getFile());
         }
         return String.valueOf(e.getMessage());
     }

@@ -73,7 +73,7 @@ final class ShellCommand implements Callable<Integer> {
 
     private void readInputs(CommandCell cell, ShellInput input) throws IOException {
         PolicyEngine.Session session = cell.cell().session();
-        for (String text = input.next(); text != null; text = input.next()) {
+        for (String text = input.next(io.stderr()::println); text != null; text = input.next(io.stderr()::println)) {
             cell.cell().timers().runDue();   // the shell runs due timers between inputs, never while it waits
             if (cell.exitStatus().isPresent()) {
                 return;

@@ -47,9 +47,8 @@ final class ShellInput {
 
     /**
      * Lines read from {@code io}'s stdin as UTF-8; prompts go to its stdout when it is interactive.
-     * A line that is not valid UTF-8 is reported on stderr, naming its line and first bad byte, and
-     * skipped (the files of {@code smc run} are refused for the same reason; the shell goes on with
-     * the next line).
+     * A line that is not valid UTF-8 is refused ({@link MalformedLine}, naming its line and first
+     * bad byte), as the files of {@code smc run} are.
      */
     static LineSource piped(Io io) {
         InputStream in = new BufferedInputStream(io.stdin());
@@ -63,20 +62,18 @@ final class ShellInput {
                     prompts.print(prompt);
                     prompts.flush();
                 }
-                while (true) {
-                    byte[] line = rawLine(in);
-                    if (line == null) {
-                        return null;
-                    }
-                    lineNumber++;
-                    int bad = firstBadByte(line);
-                    if (bad < 0) {
-                        return new String(line, StandardCharsets.UTF_8);
-                    }
-                    io.stderr().println(ShellCommand.SOURCE + ":" + lineNumber + ": not valid UTF-8: byte 0x"
-                            + String.format("%02X", line[bad] & 0xff) + " at byte " + (bad + 1)
-                            + " of the line; the shell reads UTF-8, and skips the line");
+                byte[] line = rawLine(in);
+                if (line == null) {
+                    return null;
                 }
+                lineNumber++;
+                int bad = firstBadByte(line);
+                if (bad < 0) {
+                    return new String(line, StandardCharsets.UTF_8);
+                }
+                throw new MalformedLine(ShellCommand.SOURCE + ":" + lineNumber + ": not valid UTF-8: byte 0x"
+                        + String.format("%02X", line[bad] & 0xff) + " at byte " + (bad + 1)
+                        + " of the line; the shell reads UTF-8, and skips the input the line belongs to");
             }
 
             @Override
@@ -112,14 +109,42 @@ final class ShellInput {
         return result.isError() ? bytes.position() : -1;
     }
 
-    /** The next input's text (its lines, each ending in a newline), or {@code null} at the end. */
-    String next() throws IOException {
+    /** A line of input that cannot be read as text; its message names the line and why. */
+    static final class MalformedLine extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        MalformedLine(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * The next input's text (its lines, each ending in a newline), or {@code null} at the end. An
+     * input with a line that cannot be read ({@link MalformedLine}) is skipped whole, up to its last
+     * line, and {@code refused} told why: run without that line it would be another statement.
+     */
+    String next(java.util.function.Consumer<String> refused) throws IOException {
         StringBuilder text = new StringBuilder();
+        boolean skipping = false;
         while (true) {
-            String line = lines.readLine(text.isEmpty() ? PROMPT : CONTINUATION);
+            String line;
+            try {
+                line = lines.readLine(text.isEmpty() && !skipping ? PROMPT : CONTINUATION);
+            } catch (MalformedLine bad) {
+                refused.accept(bad.getMessage());
+                skipping = true;
+                text.setLength(0);
+                continue;
+            }
             if (line == null) {
                 lines.ended();
-                return text.isEmpty() ? null : text.toString();
+                return text.isEmpty() || skipping ? null : text.toString();
+            }
+            if (skipping) {
+                if (line.stripTrailing().endsWith(".")) {
+                    skipping = false;   // the refused input ends here; the next one starts after it
+                }
+                continue;
             }
             if (text.isEmpty() && line.isBlank()) {
                 continue;

@@ -44,16 +44,19 @@ class ShellCommandTest {
         assertEquals(0, result.status());
     }
 
-    /** A line that is not UTF-8 is reported, naming its line and byte, and skipped; the shell goes on. */
+    /**
+     * A line that is not UTF-8 is reported, naming its line and byte, and the input it belongs to is
+     * skipped whole (run without that line it would be another statement); the shell goes on.
+     */
     @Test
-    void aLineThatIsNotUtf8_isReportedAndSkipped() {
-        byte[] input = "x := 2.\n\u00ff bad.\nx * 10.\n".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+    void aLineThatIsNotUtf8_isReported_andItsInputSkipped() {
+        byte[] input = "x := 2.\nx := 10\n  * \u00ff\n  + 1.\nx * 10.\n".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
 
         Smc.Result result = smc.withInputBytes(input, "shell");
 
-        assertEquals(List.of("stdin:2: not valid UTF-8: byte 0xFF at byte 1 of the line; the shell reads UTF-8, and skips the line"),
-                result.errLines());
-        assertEquals(List.of("2", "20"), result.outLines());
+        assertEquals(List.of("stdin:3: not valid UTF-8: byte 0xFF at byte 5 of the line; the shell reads UTF-8, and skips "
+                + "the input the line belongs to"), result.errLines());
+        assertEquals(List.of("2", "20"), result.outLines(), "x stays 2: 'x := 10 + 1' did not run");
         assertEquals(0, result.status());
     }
 

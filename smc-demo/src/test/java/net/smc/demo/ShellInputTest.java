@@ -21,33 +21,33 @@ class ShellInputTest {
     void inputEnds_atALineEndingInADot_afterTrailingWhitespace() throws Exception {
         ShellInput input = reading("a := 1\n b.  \t\nc.\n");
 
-        assertEquals("a := 1\n b.  \t\n", input.next());
-        assertEquals("c.\n", input.next());
-        assertNull(input.next());
+        assertEquals("a := 1\n b.  \t\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertEquals("c.\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertNull(input.next(org.junit.jupiter.api.Assertions::fail));
     }
 
     @Test
     void blankLinesBeforeAnInput_areSkipped_butKeptInsideOne() throws Exception {
         ShellInput input = reading("\n  \nx\n\ny.\n\n");
 
-        assertEquals("x\n\ny.\n", input.next());
-        assertNull(input.next());
+        assertEquals("x\n\ny.\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertNull(input.next(org.junit.jupiter.api.Assertions::fail));
     }
 
     @Test
     void aDotInsideTheLine_doesNotEndTheInput() throws Exception {
         ShellInput input = reading("x := 1. y := 2\n.\n");
 
-        assertEquals("x := 1. y := 2\n.\n", input.next());
+        assertEquals("x := 1. y := 2\n.\n", input.next(org.junit.jupiter.api.Assertions::fail));
     }
 
     @Test
     void textWithoutAFinalDot_isTheLastInput() throws Exception {
         ShellInput input = reading("x.\ny");
 
-        assertEquals("x.\n", input.next());
-        assertEquals("y\n", input.next());
-        assertNull(input.next());
+        assertEquals("x.\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertEquals("y\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertNull(input.next(org.junit.jupiter.api.Assertions::fail));
     }
 
     /** Lines as a terminal's line editor gives them, recording the prompt shown before each. */
@@ -77,9 +77,9 @@ class ShellInputTest {
         Scripted terminal = new Scripted("x := 1", "  + 2.", "", "y.");
         ShellInput input = new ShellInput(terminal);
 
-        assertEquals("x := 1\n  + 2.\n", input.next());
-        assertEquals("y.\n", input.next());
-        assertNull(input.next());
+        assertEquals("x := 1\n  + 2.\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertEquals("y.\n", input.next(org.junit.jupiter.api.Assertions::fail));
+        assertNull(input.next(org.junit.jupiter.api.Assertions::fail));
         assertEquals(java.util.List.of("smc> ", "...> ", "smc> ", "smc> ", "smc> "), terminal.prompts);
         assertEquals(1, terminal.ended);
     }
@@ -89,8 +89,8 @@ class ShellInputTest {
         Scripted terminal = new Scripted("a := 1", "b := a + 1");
         ShellInput input = new ShellInput(terminal);
 
-        assertEquals("a := 1\nb := a + 1\n", input.next());
+        assertEquals("a := 1\nb := a + 1\n", input.next(org.junit.jupiter.api.Assertions::fail));
         assertEquals(java.util.List.of("smc> ", "...> ", "...> "), terminal.prompts);
-        assertNull(input.next());
+        assertNull(input.next(org.junit.jupiter.api.Assertions::fail));
     }
 }

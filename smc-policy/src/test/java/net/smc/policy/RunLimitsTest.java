@@ -178,8 +178,12 @@ class RunLimitsTest {
                 assertEquals(List.of("number overflow"), messages(), expression);
             }
             cell.run("random.p2", "root print: (1e400000000 random) < 1e400000000.");
+            cell.run("tiny.p2", "root print: (1e-400000000 collect: [:i | i]) size. root print: 1e-400000000 random.");
+            cell.run("zero.p2", "root print: (0E-20000 + 1E-20000) == 1E-20000. root print: (1E9999 + 1) > 0.");
             cell.run("loop.p2", "1e400000000 do: [:i | root print: i. i == 1 ifTrue: [root exit]].");
         });
-        assertEquals(List.of("true", "0", "1"), output, "random of a huge number answers at once; a loop over one starts at once");
+        assertEquals(List.of("true", "1", "0", "true", "true", "0", "1"), output,
+                "random of a huge number answers at once, a loop over a tiny one runs once, a sum with a zero or of"
+                        + " exactly 10,000 digits is worked out, and a loop over a huge number starts at once");
     }
 }

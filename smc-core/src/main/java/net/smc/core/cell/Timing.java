@@ -46,7 +46,7 @@ public record Timing(long comTimeoutMillis, long failureTimeoutMillis, int backu
      * @throws IllegalArgumentException naming the parameter when one is missing or not a number
      */
     public static Timing of(Mission mission) {
-        long backups = mission.parameter("backups").map(p -> TeamParameters.millis(p.name(), p.value())).orElse(1L);
+        long backups = mission.parameter("backups").map(p -> TeamParameters.count(p.name(), p.value())).orElse(1L);
         TeamParameters.timing(number(mission, "comTimeout"), number(mission, "failureTimeout"), backups)
                 .ifPresent(problem -> {
                     throw new IllegalArgumentException(problem.message());

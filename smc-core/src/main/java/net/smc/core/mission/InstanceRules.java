@@ -84,21 +84,29 @@ final class InstanceRules {
 
     /**
      * The parameters the team protocols read keep their rules ({@link TeamParameters}): a mission
-     * that breaks one would load here and be refused by every cell. Checked when their values are
-     * of their declared types (a wrong type is reported already).
+     * that breaks one would load here and be refused by every cell. A value that does not parse as
+     * its declared type is reported already and left out; a team parameter the class declares with a
+     * type the protocols cannot read (a time as a string, say) is reported at its declaration.
      */
     private void teamParameters() {
         Map<String, Object> values = new HashMap<>();
         Map<String, ParamValue> at = new HashMap<>();
         for (ParamValue value : instance.parameters()) {
             ParamDecl decl = spec.parameter(value.name());
-            if (decl != null && decl.type() != null) {
-                try {
-                    values.put(value.name(), decl.type().parse(value.text()));
-                    at.put(value.name(), value);
-                } catch (IllegalArgumentException e) {
-                    return;
-                }
+            if (decl == null || decl.type() == null) {
+                continue;
+            }
+            List<String> wanted = TeamParameters.typesOf(value.name());
+            if (!wanted.isEmpty() && !wanted.contains(decl.type().xmlName())) {
+                reporter.textError(value.at(), "parameter '" + value.name() + "' is declared " + decl.type().xmlName()
+                        + " in " + classLabel() + "; the team protocols read it as " + String.join(" or ", wanted));
+                continue;
+            }
+            try {
+                values.put(value.name(), decl.type().parse(value.text()));
+                at.put(value.name(), value);
+            } catch (IllegalArgumentException e) {
+                // reported by parameters()
             }
         }
         if (values.get("scheme") instanceof String scheme) {
@@ -111,15 +119,14 @@ final class InstanceRules {
         if (!values.containsKey("comTimeout") || !values.containsKey("failureTimeout")) {
             return;
         }
-        try {
-            long com = TeamParameters.millis("comTimeout", values.get("comTimeout"));
-            long failure = TeamParameters.millis("failureTimeout", values.get("failureTimeout"));
-            long backups = values.containsKey("backups") ? TeamParameters.millis("backups", values.get("backups")) : 1;
-            TeamParameters.timing(com, failure, backups).ifPresent(problem -> reporter.textError(at.get(problem.parameter()).at(),
-                    problem.message() + "; the team protocols read parameter '" + problem.parameter() + "'"));
-        } catch (IllegalArgumentException e) {
-            // a value of another type than the protocols read (a string for a time): a cell names it
-        }
+        long com = TeamParameters.millis("comTimeout", values.get("comTimeout"));
+        long failure = TeamParameters.millis("failureTimeout", values.get("failureTimeout"));
+        long backups = values.containsKey("backups") ? TeamParameters.count("backups", values.get("backups")) : 1;
+        TeamParameters.timing(com, failure, backups).ifPresent(problem -> {
+            ParamValue where = at.get(problem.parameter());
+            reporter.textError(where == null ? at.get("failureTimeout").at() : where.at(),
+                    problem.message() + "; the team protocols read parameter '" + problem.parameter() + "'");
+        });
     }
 
     private void roles() {

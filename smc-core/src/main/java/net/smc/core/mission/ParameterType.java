@@ -26,8 +26,9 @@ public enum ParameterType {
     /** A non-negative time span: a number and a unit ({@code 500ms}, {@code 3s}, {@code 2min}, {@code 1h}) or ISO-8601 ({@code PT3S}). */
     DURATION("duration");
 
-    /** Decimal notation only: Java's own syntax would also take {@code NaN}, {@code 1d} and hex. */
+    /** A whole number in ASCII digits. */
     private static final Pattern WHOLE = Pattern.compile("[-+]?[0-9]+");
+    /** Decimal notation only: Java's own syntax would also take {@code NaN}, {@code 1d} and hex. */
     private static final Pattern DECIMAL = Pattern.compile("[-+]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][-+]?\\d+)?");
     private static final Pattern SIMPLE_DURATION = Pattern.compile("(\\d{1,18})(ms|s|min|h)");
 
@@ -53,12 +54,6 @@ public enum ParameterType {
     }
 
     /**
-     * The value {@code text} denotes: an {@link Integer}, {@link Long}, {@link Double},
-     * {@link Boolean}, {@link String} or {@link Duration}.
-     *
-     * @throws IllegalArgumentException when {@code text} is not a value of this type
-     */
-    /**
      * {@code text} when it is a whole number in ASCII digits with an optional sign; Java's parsers
      * take the digits of every script ({@code ١} for 1), which a mission file does not.
      *
@@ -71,6 +66,12 @@ public enum ParameterType {
         return text;
     }
 
+    /**
+     * The value {@code text} denotes: an {@link Integer}, {@link Long}, {@link Double},
+     * {@link Boolean}, {@link String} or {@link Duration}.
+     *
+     * @throws IllegalArgumentException when {@code text} is not a value of this type
+     */
     public Object parse(String text) {
         try {
             return switch (this) {

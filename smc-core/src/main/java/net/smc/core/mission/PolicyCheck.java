@@ -14,6 +14,7 @@ import net.smc.core.wire.StrictUtf8;
 import net.smc.policy.api.PolicyRepository;
 import net.smc.policy.lang.IncludeResolver;
 import net.smc.policy.lang.Parser;
+import net.smc.policy.lang.SourceFiles;
 import net.smc.policy.lang.SyntaxError;
 import net.smc.policy.lang.Unit;
 
@@ -21,7 +22,8 @@ import net.smc.policy.lang.Unit;
  * Whether a policy URI resolves in the repository and its file parses and fits one policy reply,
  * so that a mission never reaches a vehicle with a policy that cannot load or cannot be sent. The file is parsed, not run: running it needs
  * the role's managed objects. Includes resolve as a cell resolves them (beside the including file,
- * then in the repository), and never outside the repository's folder. Answers are remembered per URI: roles often share a policy.
+ * then in the repository), decoded as a cell decodes them; one that would leave the repository's
+ * folder is refused here, so that a mission checked here never has a vehicle read other files. Answers are remembered per URI: roles often share a policy.
  */
 final class PolicyCheck {
     private final PolicyRepository repository;
@@ -88,8 +90,11 @@ final class PolicyCheck {
             if (PolicyRepository.isUri(name)) {
                 Path file = repository.pathOf(name);
                 found = Files.isRegularFile(file) ? Optional.of(file) : Optional.empty();
-            } else if (including != null && inRepository(including.resolveSibling(name))
-                    && Files.isRegularFile(including.resolveSibling(name))) {
+            } else if (including != null && Files.isRegularFile(including.resolveSibling(name))) {
+                if (!inRepository(including.resolveSibling(name))) {
+                    throw new UncheckedIOException(new IOException("it is outside the policy repository "
+                            + repository.root() + "; a policy includes files of the repository only"));
+                }
                 found = Optional.of(including.resolveSibling(name).normalize());
             } else {
                 found = repository.find(name);
@@ -103,7 +108,7 @@ final class PolicyCheck {
         try {
             String source = PolicyRepository.isUri(name) ? name : found.get().getFileName().toString();
             files.put(source, found.get());
-            return new IncludeResolver.Included(source, Files.readString(found.get()));
+            return new IncludeResolver.Included(source, SourceFiles.decode(Files.readAllBytes(found.get())));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

@@ -1,6 +1,7 @@
 package net.smc.core.mission;
 
 import java.time.Duration;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -52,6 +53,31 @@ public final class TeamParameters {
             default -> throw new IllegalArgumentException("scheme '" + text
                     + "' is not known; it must be 'distributed' or 'centralised'");
         };
+    }
+
+    /**
+     * The types a mission class may declare team parameter {@code name} with, as mission classes
+     * write them ({@code int}, {@code duration}); empty for a parameter the protocols do not read.
+     */
+    public static List<String> typesOf(String name) {
+        return switch (name) {
+            case "comTimeout", "failureTimeout" -> List.of("int", "long", "duration");
+            case "backups" -> List.of("int", "long");
+            case "scheme" -> List.of("string");
+            default -> List.of();
+        };
+    }
+
+    /**
+     * A count parameter's value ({@code backups}): a whole number.
+     *
+     * @throws IllegalArgumentException naming the parameter when the value is not one
+     */
+    public static long count(String name, Object value) {
+        if (value instanceof Integer || value instanceof Long) {
+            return ((Number) value).longValue();
+        }
+        throw new IllegalArgumentException("mission parameter '" + name + "' is " + value + "; it must be a whole number");
     }
 
     /**

@@ -277,6 +277,7 @@ class MissionLoaderTest {
 
         assertEquals(1, e.errors().size(), e.getMessage());
         assertTrue(e.errors().get(0).message().startsWith("policy 'policy:/roles/relay/mission' does not parse: ")
+                && e.errors().get(0).message().contains("it is outside the policy repository")
                 && e.errors().get(0).message().contains("(and 1 more)"), e.getMessage());
     }
 

@@ -224,6 +224,7 @@ public final class Lexer {
                 index++;
             }
             if (tooLong(start, at)) {
+                addNumber(start, at, BigDecimal.ZERO);   // refused already; stands in so the parser goes on
                 return;
             }
             addNumber(start, at, negate(new BigDecimal(new BigInteger(text.substring(hexStart, index), 16)), negative));

@@ -168,10 +168,10 @@ public final class Parser {
 
     /**
      * Skips to just after the next '.' that ends a top-level statement, or to the end. A '.' inside
-     * a block separates its statements and is skipped. Inside parentheses or an array literal no
-     * '.' belongs: one there that ends its line ends the statement too (the bracket was left open,
-     * and must not swallow the rest of the unit and hide its other errors), while one with more of
-     * the line after it is a stray '.' in a statement that goes on, and is skipped.
+     * a block separates its statements and is skipped. Inside parentheses or an array literal (and
+     * no block) no '.' belongs: one there that ends its line ends the statement too (the bracket
+     * was left open, and must not swallow the rest of the unit and hide its other errors), while one
+     * with more of the line after it is a stray '.' in a statement that goes on, and is skipped.
      */
     private void synchronize() {
         while (!check(TokenKind.EOF)) {
@@ -180,7 +180,7 @@ public final class Parser {
                 continue;
             }
             boolean endsLine = check(TokenKind.EOF) || peek().pos().line() > t.pos().line();
-            if (open.isEmpty() || open.peek() != TokenKind.LBRACKET && endsLine) {
+            if (open.isEmpty() || !open.contains(TokenKind.LBRACKET) && endsLine) {
                 open.clear();
                 return;
             }
@@ -421,7 +421,17 @@ public final class Parser {
                 return t;
             }
             case LPAREN, LBRACKET, ARRAY_START -> open.push(t.kind());
-            case RPAREN, RBRACKET -> open.poll();
+            case RPAREN -> {
+                if (open.peek() == TokenKind.LPAREN || open.peek() == TokenKind.ARRAY_START) {
+                    open.pop();
+                }
+            }
+            case RBRACKET -> {
+                // closes the innermost block, and whatever was left open inside it
+                while (!open.isEmpty() && open.pop() != TokenKind.LBRACKET) {
+                    // popped
+                }
+            }
             default -> {
             }
         }

@@ -95,10 +95,11 @@ public final class SourceFiles {
         }
     }
 
+    /** The line of a byte: lines end at a line feed, or a carriage return that no line feed follows (as the lexer counts them). */
     private static int lineOf(byte[] bytes, int offset) {
         int line = 1;
         for (int i = 0; i < offset; i++) {
-            if (bytes[i] == '\n') {
+            if (bytes[i] == '\n' || bytes[i] == '\r' && (i + 1 >= bytes.length || bytes[i + 1] != '\n')) {
                 line++;
             }
         }

@@ -423,7 +423,7 @@ public final class CellRuntime {
      */
     Object runNested(Execution ex, String source, String text, Path file) {
         if (ex.depth >= limits().maxCallDepth()) {
-            throw new PonderError("call depth limit of " + limits().maxCallDepth() + " exceeded");
+            throw new CallDepthExceeded(limits().maxCallDepth());
         }
         Unit unit = parse(source, text, file);
         if (unit.hasErrors()) {

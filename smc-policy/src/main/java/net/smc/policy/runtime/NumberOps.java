@@ -84,6 +84,9 @@ final class NumberOps {
         if (n.signum() <= 0) {
             return 0;
         }
+        if (Numbers.wholeDigits(n) <= 0) {
+            return 1;   // a positive number below 1: rounding 1e-400000000 up would write out its digits
+        }
         if (Numbers.wholeDigits(n) > 19) {
             return Long.MAX_VALUE;   // beyond a long; rounding it first would write out all its digits
         }

@@ -67,9 +67,14 @@ public final class Numbers {
      * million, and working them out would hold the cell's thread for minutes.
      */
     private static void checkSum(BigDecimal a, BigDecimal b) {
-        long highest = Math.max(wholeDigits(a), wholeDigits(b));
+        if (a.signum() == 0 && b.signum() == 0) {
+            return;   // zero, at once
+        }
+        // a zero adds no digits before the point, but its scale counts (1 + 0E-400000000 has 400000001)
+        long highest = a.signum() == 0 ? wholeDigits(b) : b.signum() == 0 ? wholeDigits(a) : Math.max(wholeDigits(a), wholeDigits(b));
         long lowest = Math.max(a.scale(), b.scale());   // digits after the point the result keeps
-        if (highest + lowest + 1 > MAX_DIGITS) {
+        // the result has highest + lowest digits, or one more for a carry, which checked() sees
+        if (highest + lowest > MAX_DIGITS) {
             throw new PonderError("number overflow");
         }
     }
@@ -116,7 +121,7 @@ public final class Numbers {
         if (a.signum() == 0 || quotientDigits <= -6) {
             return BigDecimal.ZERO.setScale(5);
         }
-        if (quotientDigits + 5 > MAX_DIGITS) {
+        if (quotientDigits - 1 + 5 > MAX_DIGITS) {   // at least that many digits; checked() sees the one more
             throw new PonderError("number overflow");
         }
         try {
