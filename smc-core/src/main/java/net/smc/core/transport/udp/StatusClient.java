@@ -90,6 +90,11 @@ public final class StatusClient {
             }
             String json = StatusResponder.replyJson(packet.getData(), packet.getLength());
             if (json != null) {
+                if (!net.smc.core.wire.StrictUtf8.isWellFormed(packet.getData(), StatusResponder.HEADER_BYTES,
+                        packet.getLength() - StatusResponder.HEADER_BYTES)) {
+                    throw new IOException("the status reply from " + node.getAddress().getHostAddress() + ":" + node.getPort()
+                            + " is not valid UTF-8; a status reply is UTF-8 JSON; not printed");
+                }
                 return validJson(json, node);
             }
         }

@@ -66,6 +66,18 @@ class StatusOverUdpTest {
         assertEquals("{\"id\":\"real\"}", askFake("SMC!STAT\u0002{\"id\":\"real\"}".getBytes(UTF_8)));
     }
 
+    /** Bytes that are not UTF-8 are refused, not printed as replacement characters. */
+    @Test
+    void anAnswerThatIsNotUtf8_isAClearError() {
+        byte[] header = "SMC!STAT\u0002{\"id\":\"".getBytes(UTF_8);
+        byte[] reply = java.util.Arrays.copyOf(header, header.length + 3);
+        reply[header.length] = (byte) 0xFF;
+        reply[header.length + 1] = '"';
+        reply[header.length + 2] = '}';
+        IOException e = assertThrows(IOException.class, () -> askFake(reply));
+        assertTrue(e.getMessage().contains("is not valid UTF-8"), e.getMessage());
+    }
+
     @Test
     void anAnswerThatIsNotValidJson_isAClearError() {
         IOException e = assertThrows(IOException.class, () -> askFake("SMC!STAT\u0002{\"id\": oops".getBytes(UTF_8)));
