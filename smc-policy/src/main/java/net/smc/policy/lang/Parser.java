@@ -26,7 +26,7 @@ public final class Parser {
     public static final int MAX_EXPRESSION_DEPTH = 2000;
 
     private final Lexer lexer;
-    /** This file's lexical errors: listed before its parse errors, as if the file were lexed first. */
+    /** This file's lexical errors, in the order of their places; merged with its parse errors by place. */
     private final List<SyntaxError> lexErrors = new ArrayList<>();
     /** This file's parse errors, and the errors of the files it includes, in order. */
     private final List<SyntaxError> errors = new ArrayList<>();
@@ -90,14 +90,35 @@ public final class Parser {
         return errors;
     }
 
-    /** Parses one file of a unit; answers its lexical errors, then its parse errors and those of its includes. */
+    /**
+     * Parses one file of a unit; answers its errors in the order of their places in it (lexical and
+     * parse errors merged), an include's errors where the include stands.
+     */
     private static List<SyntaxError> parseFile(String source, String text, IncludeResolver includes, int includeDepth,
                                                int errorsBefore, Consumer<Node> statements) {
         Parser parser = new Parser(source, text, includes, includeDepth, errorsBefore, statements);
         parser.unit();
-        List<SyntaxError> all = new ArrayList<>(parser.lexErrors);
-        all.addAll(parser.errors);
+        List<SyntaxError> all = new ArrayList<>();
+        java.util.Iterator<SyntaxError> lexical = parser.lexErrors.iterator();
+        SyntaxError nextLexical = lexical.hasNext() ? lexical.next() : null;
+        for (SyntaxError e : parser.errors) {
+            // an include's errors name their own file; they stay where the include is
+            boolean own = e.pos().source().equals(source);
+            while (own && nextLexical != null && before(nextLexical.pos(), e.pos())) {
+                all.add(nextLexical);
+                nextLexical = lexical.hasNext() ? lexical.next() : null;
+            }
+            all.add(e);
+        }
+        while (nextLexical != null) {
+            all.add(nextLexical);
+            nextLexical = lexical.hasNext() ? lexical.next() : null;
+        }
         return all;
+    }
+
+    private static boolean before(SourcePos a, SourcePos b) {
+        return a.line() < b.line() || a.line() == b.line() && a.column() <= b.column();
     }
 
     /** Thrown to abandon the current statement after an error has been recorded. */

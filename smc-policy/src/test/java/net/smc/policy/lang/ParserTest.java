@@ -469,6 +469,14 @@ class ParserTest {
         assertEquals(List.of("(y := 3)"), unit.statements().stream().map(ParserTest::show).toList());
     }
 
+    /** Lexical and parse errors are listed in the order of their places in the file. */
+    @Test
+    void errors_areListedInTheOrderOfTheirPlaces() {
+        List<SyntaxError> errors = errors("x := 1 2.\ny := $.\nz := (3.\nw := 99r1.\n");
+        assertEquals(List.of(at(1, 8), at(2, 6), at(2, 7), at(3, 8), at(4, 6)), errors.stream().map(SyntaxError::pos).toList(),
+                errors.toString());
+    }
+
     @Test
     void errors_areCappedAtOneHundredWithAFinalLine() {
         String text = ").".repeat(150);
