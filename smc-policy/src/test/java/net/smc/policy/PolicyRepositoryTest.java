@@ -88,6 +88,27 @@ class PolicyRepositoryTest {
         assertEquals(List.of("policy:/demo/broken:2:6: unknown operation 'frob' on SelfManagedCell"), errors);
     }
 
+    /** A policy of the repository includes and reads the repository's files only, not one beside it or anywhere. */
+    @Test
+    void cellLoad_ofAPolicyNamingAFileOutsideTheRepository_isRefused(@TempDir Path elsewhere) throws IOException {
+        Path secret = Files.writeString(elsewhere.resolve("secret.p2"), "root print: \"secret\".");
+        repositoryWith("roles/helper.p2", "root print: \"helper\".");
+        PolicyRepository repo = repositoryWith("roles/a.p2", "include \"helper.p2\".\ninclude \"" + secret + "\".");
+        repositoryWith("roles/b.p2", "root print: (root read: \"" + secret + "\").");
+        List<String> lines = new ArrayList<>();
+        List<String> errors = new ArrayList<>();
+        PolicyEngine cell = PolicyEngine.builder().output(lines::add).errors(d -> errors.add(d.toString())).repository(repo).build();
+
+        cell.load("policy:/roles/a");
+        cell.load("policy:/roles/b");
+
+        assertEquals(List.of(), lines, "nothing of the file outside was run");
+        String refused = ": cannot read '" + secret + "': it is outside the policy repository; a policy of the repository"
+                + " includes and reads files of the repository only";
+        assertEquals(List.of("policy:/roles/a:2:9" + refused, "load:1:6: cannot run 'policy:/roles/a': 1 syntax error",
+                "policy:/roles/b:1:19" + refused), errors);
+    }
+
     @Test
     void cellLoad_ofAMissingUri_saysFileNotFound() {
         List<String> errors = new ArrayList<>();

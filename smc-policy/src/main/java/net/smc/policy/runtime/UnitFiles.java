@@ -22,7 +22,8 @@ import net.smc.policy.lang.SourceFiles;
  * Where a cell's units come from on disk: the file each unit was read from, by its source name,
  * so that a name a unit reads or includes resolves against that unit's folder first, then as a
  * plain path (for a unit with no file), then in the policy repository; a {@code policy:} URI is the
- * repository's. Files are read within the unit size limit.
+ * repository's. A file of the repository names files of the repository only (its folder's others
+ * outside it are refused). Files are read within the unit size limit.
  */
 final class UnitFiles {
     private final PolicyRepository repository;
@@ -33,6 +34,10 @@ final class UnitFiles {
     UnitFiles(PolicyRepository repository, int maxChars) {
         this.repository = repository;
         this.maxChars = maxChars;
+    }
+
+    private boolean inRepository(Path file) {
+        return file.startsWith(repository.root().toAbsolutePath().normalize());
     }
 
     /** Notes that the unit named {@code source} was read from {@code file}. */
@@ -127,8 +132,13 @@ final class UnitFiles {
     private Optional<Path> locateFile(String name, String fromSource) {
         Path from = files.get(fromSource);
         if (from != null) {
-            Path sibling = from.resolveSibling(name).normalize();
+            Path sibling = from.resolveSibling(name).toAbsolutePath().normalize();
             if (Files.isRegularFile(sibling)) {
+                if (repository != null && inRepository(from) && !inRepository(sibling)) {
+                    // a file of the repository (a role's policy, and what it includes) reads only the repository
+                    throw new UncheckedIOException(new IOException("it is outside the policy repository; a policy"
+                            + " of the repository includes and reads files of the repository only"));
+                }
                 return Optional.of(sibling);
             }
         }
