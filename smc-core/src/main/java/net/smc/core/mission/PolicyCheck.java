@@ -91,11 +91,12 @@ final class PolicyCheck {
                 Path file = repository.pathOf(name);
                 found = Files.isRegularFile(file) ? Optional.of(file) : Optional.empty();
             } else if (including != null && Files.isRegularFile(including.resolveSibling(name))) {
-                if (!inRepository(including.resolveSibling(name))) {
+                Path sibling = including.resolveSibling(name).normalize();
+                if (!inRepository(sibling)) {
                     throw new UncheckedIOException(new IOException("it is outside the policy repository "
                             + repository.root() + "; a policy includes files of the repository only"));
                 }
-                found = Optional.of(including.resolveSibling(name).normalize());
+                found = Optional.of(sibling);
             } else {
                 found = repository.find(name);
             }

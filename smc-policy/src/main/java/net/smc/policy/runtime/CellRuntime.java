@@ -422,19 +422,17 @@ public final class CellRuntime {
      * ends with that error, as a block that calls itself does.
      */
     Object runNested(Execution ex, String source, String text, Path file) {
-        if (ex.depth >= limits().maxCallDepth()) {
-            throw new CallDepthExceeded(limits().maxCallDepth());
-        }
+        ex.checkCallDepth();
         Unit unit = parse(source, text, file);
         if (unit.hasErrors()) {
             throw new PonderError("cannot run '" + source + "': " + unit.errors().size() + " syntax error"
                     + (unit.errors().size() == 1 ? "" : "s"));
         }
-        ex.depth++;
+        ex.enterCall();
         try {
             return runStatements(unit, new VariableFrame(ex, Map.of()));
         } finally {
-            ex.depth--;
+            ex.leaveCall();
         }
     }
 
@@ -457,22 +455,7 @@ public final class CellRuntime {
 
     /** Resolves a path string: absolute when it starts with '/', else from root ({@code root/} optional). */
     public Object resolve(String path) {
-        String body = path.startsWith("/") ? path.substring(1) : path;
-        if (body.equals("root")) {
-            return root;
-        }
-        if (body.startsWith("root/") && !path.startsWith("/")) {
-            body = body.substring(5);
-        }
-        Object at = root;
-        for (String segment : body.split("/", -1)) {
-            Object next = at instanceof Domain d ? d.get(segment) : null;
-            if (next == null) {
-                throw new PonderError("path not found '" + Numbers.abbreviate(path) + "'");
-            }
-            at = next;
-        }
-        return at;
+        return Paths.resolve(root, path);
     }
 
     /**

@@ -32,6 +32,23 @@ public final class Execution {
         this.source = source;
     }
 
+    /** Refuses one more nested call at the call depth limit ({@link CallDepthExceeded}). */
+    void checkCallDepth() {
+        if (depth >= runtime.limits().maxCallDepth()) {
+            throw new CallDepthExceeded(runtime.limits().maxCallDepth());
+        }
+    }
+
+    /** Counts one nested call (a block call, a nested unit) against the call depth limit; {@link #leaveCall} ends it. */
+    void enterCall() {
+        checkCallDepth();
+        depth++;
+    }
+
+    void leaveCall() {
+        depth--;
+    }
+
     /** Root, or the policy whose condition or action is running. */
     public Object source() {
         return source;

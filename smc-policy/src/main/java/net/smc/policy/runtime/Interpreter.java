@@ -127,10 +127,7 @@ public final class Interpreter {
             throw new PonderError("Not enough arguments for block. " + args.length + " given, "
                     + code.params.length + " expected.");
         }
-        if (ex.depth >= runtime.limits().maxCallDepth()) {
-            throw new CallDepthExceeded(runtime.limits().maxCallDepth());
-        }
-        ex.depth++;
+        ex.enterCall();
         try {
             VariableFrame frame = new VariableFrame(ex, code.free, block.captured, code.params, args, block.scope);
             for (int i = 0; i < extraNames.length; i++) {
@@ -142,7 +139,7 @@ public final class Interpreter {
             }
             return value;
         } finally {
-            ex.depth--;
+            ex.leaveCall();
         }
     }
 

@@ -160,10 +160,7 @@ public final class ObligationPolicy extends ManagedObject implements net.smc.pol
         if (!active) {
             return;
         }
-        if (ex.depth >= runtime.limits().maxCallDepth()) {
-            // Not contained here: the send that raised the event is where the loop shows.
-            throw new CallDepthExceeded(runtime.limits().maxCallDepth());
-        }
+        ex.checkCallDepth();   // not contained here: the send that raised the event is where the loop shows
         Object previous = ex.source;
         ex.source = this;
         ex.firing++;

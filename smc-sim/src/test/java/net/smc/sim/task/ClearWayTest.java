@@ -70,8 +70,7 @@ class ClearWayTest {
 
         world.run(30);
 
-        assertEquals(4.125, robot.x, 1e-9);
-        assertEquals(2.0, robot.y, 1e-9);
+        assertStandsAt(robot, 4.125, 2.0);
     }
 
     @Test
@@ -88,10 +87,8 @@ class ClearWayTest {
 
         world.run(20);
 
-        assertEquals(2.0, open.x, 1e-9);
-        assertEquals(2.0, open.y, 1e-9);
-        assertEquals(3.7, wall.x, 1e-9);
-        assertEquals(0.6, wall.y, 1e-9);
+        assertStandsAt(open, 2.0, 2.0);
+        assertStandsAt(wall, 3.7, 0.6);
     }
 
     @Test
@@ -105,8 +102,7 @@ class ClearWayTest {
 
         world.run(20);
 
-        assertEquals(4.125, robot.x, 1e-9);
-        assertEquals(2.0, robot.y, 1e-9);
+        assertStandsAt(robot, 4.125, 2.0);
         assertFalse(way.moving());
 
         navigator.stop();    // its role ended: now no task drives
@@ -154,5 +150,11 @@ class ClearWayTest {
         world.run(30);
 
         assertFalse(inTheDoorway(robot), "still in the doorway at x " + robot.x);
+    }
+
+    /** The robot stands exactly where it was placed: it was not moved. */
+    private static void assertStandsAt(FakeRobot robot, double x, double y) {
+        assertEquals(x, robot.x, 1e-9);
+        assertEquals(y, robot.y, 1e-9);
     }
 }
